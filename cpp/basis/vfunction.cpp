@@ -1,0 +1,59 @@
+#include "basis/vfunction.hpp"
+
+#include <cmath>
+
+namespace pdesurf {
+
+double VFunction::eval(double v, int k) const {
+  if (family == Family::Poly) {
+    if (k > n) return 0.0;
+    double factor = 1.0, power = 1.0;
+    for (int i = 0; i < k; ++i) factor *= n - i;
+    for (int i = 0; i < n - k; ++i) power *= v;
+    return factor * power;
+  }
+  const double a = w * v;
+  const double wk = std::pow(w, k);
+  switch (family) {
+    case Family::Cos:
+    case Family::Sin: {
+      // Each derivative is a quarter turn: cos -> -sin -> -cos -> sin; sin starts one turn later.
+      const int turn = (k + (family == Family::Sin ? 3 : 0)) % 4;
+      switch (turn) {
+        case 0: return wk * std::cos(a);
+        case 1: return -wk * std::sin(a);
+        case 2: return -wk * std::cos(a);
+        default: return wk * std::sin(a);
+      }
+    }
+    case Family::Exp: return wk * std::exp(a);
+    case Family::Cosh: return wk * (k % 2 == 0 ? std::cosh(a) : std::sinh(a));
+    case Family::Sinh: return wk * (k % 2 == 0 ? std::sinh(a) : std::cosh(a));
+    case Family::Poly: break;
+  }
+  return 0.0;
+}
+
+const char* familyName(Family f) {
+  switch (f) {
+    case Family::Poly: return "poly";
+    case Family::Cos: return "cos";
+    case Family::Sin: return "sin";
+    case Family::Exp: return "exp";
+    case Family::Cosh: return "cosh";
+    case Family::Sinh: return "sinh";
+  }
+  return "?";
+}
+
+bool familyFromName(const std::string& name, Family* out) {
+  static const Family all[] = {Family::Poly, Family::Cos, Family::Sin, Family::Exp, Family::Cosh, Family::Sinh};
+  for (Family f : all)
+    if (name == familyName(f)) {
+      *out = f;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,31 @@
+// Error model of the core: every failure is a pdesurf::Error with a code and a message that
+// names the offending field. Numeric kernels never throw; parsing and solving set-up do.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace pdesurf {
+
+enum class ErrorCode {
+  ParseError,          // malformed JSON or expression text
+  InvalidField,        // a field has the wrong type, range, or is unknown/missing
+  UnknownName,         // a parameter or function name that does not exist
+  NonFinite,           // a number or a sampled value is NaN or infinite
+  DegenerateOperator,  // the PDE loses its order in u (leading coefficient zero)
+  GridSize,            // grid outside 1..2048 per direction
+  Singular,            // the boundary-value problem has no unique solution (resonance)
+  Internal,            // a bug: please report
+};
+
+const char* errorCodeName(ErrorCode code);
+
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ErrorCode code() const { return code_; }
+
+ private:
+  ErrorCode code_;
+};
+
+}  // namespace pdesurf

@@ -1,0 +1,45 @@
+// The u-ODE of one separable term. For a v-factor with g'' = sigma g, the operator
+//   L = Σ_{k=0}^{n} alpha[k] ∂^{2(n-k)}/∂u^{2(n-k)} ∂^{2k}/∂v^{2k}
+// (order 2n: n = 1 second, 2 fourth, 3 sixth order) maps G(u) g(v) to
+//   (Σ_k alpha[k] sigma^k G^{(2(n-k))}(u)) g(v),
+// so G solves a constant-coefficient ODE of order 2n with G^{(i)} given at u = 0 and u = 1
+// for i < n. One mechanism handles every root structure: roots closer than one unit (the
+// length of [0,1]) are grouped, and each group contributes the divided differences of
+// r -> e^{r u} over its roots, which tend to u^j e^{r u} as roots merge (repeated roots)
+// and stay well conditioned when they nearly merge.
+#pragma once
+#include <Eigen/Dense>
+#include <vector>
+
+#include "ode/u_factor.hpp"
+
+namespace pdesurf {
+
+class EvenOdeBasis {
+ public:
+  // Throws Error(DegenerateOperator) when alpha[0] == 0 or a coefficient is not finite,
+  // Error(Singular) when the two-point problem has no unique solution (resonance).
+  EvenOdeBasis(const std::vector<double>& alpha, double sigma);
+
+  int halfOrder() const { return n_; }
+  const std::vector<cplx>& roots() const { return roots_; }
+  // left[i] = G^{(i)}(0), right[i] = G^{(i)}(1), i < n.
+  UFactor solve(const double* left, const double* right) const;
+
+ private:
+  struct Cluster {
+    cplx centre;
+    double shift;
+    std::vector<std::vector<cplx>> basis;  // q_j, ascending powers of (u - shift)
+  };
+  int n_ = 0;
+  std::vector<cplx> roots_;
+  std::vector<Cluster> clusters_;
+  Eigen::VectorXd rowScale_, colScale_;
+  Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
+};
+
+// Roots of Σ_k alpha[k] sigma^k rho^{n-k} = 0 in r with r² = rho (2n values, complex).
+std::vector<cplx> characteristicRoots(const std::vector<double>& alpha, double sigma);
+
+}  // namespace pdesurf

@@ -1,0 +1,68 @@
+#include "ode/u_factor.hpp"
+
+#include <algorithm>
+
+namespace pdesurf {
+
+std::vector<cplx> derivativePoly(const std::vector<cplx>& p, cplx rate, int m) {
+  std::vector<cplx> q = p;
+  for (int step = 0; step < m; ++step) {
+    std::vector<cplx> next(q.size(), 0.0);
+    for (size_t k = 0; k < q.size(); ++k) {
+      next[k] += rate * q[k];
+      if (k > 0) next[k - 1] += static_cast<double>(k) * q[k];
+    }
+    q.swap(next);
+  }
+  return q;
+}
+
+cplx evalPoly(const std::vector<cplx>& p, cplx x) {
+  cplx acc = 0.0;
+  for (size_t k = p.size(); k-- > 0;) acc = acc * x + p[k];
+  return acc;
+}
+
+UFactor UFactor::polynomial(const std::vector<double>& ascending) {
+  UFactor f;
+  ExpPoly piece;
+  piece.poly.assign(ascending.begin(), ascending.end());
+  f.pieces.push_back(piece);
+  return f;
+}
+
+double UFactor::eval(double u, int m) const {
+  double sum = 0.0;
+  for (const ExpPoly& piece : pieces) {
+    const double x = u - piece.shift;
+    const std::vector<cplx> q = derivativePoly(piece.poly, piece.rate, m);
+    const cplx e = piece.rate == 0.0 ? cplx(1.0) : std::exp(piece.rate * x);
+    sum += (e * evalPoly(q, x)).real();
+  }
+  return sum;
+}
+
+void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out) const {
+  std::fill(out, out + static_cast<size_t>(count) * (maxDerivative + 1), 0.0);
+  std::vector<std::vector<cplx>> q(maxDerivative + 1);
+  for (const ExpPoly& piece : pieces) {
+    for (int m = 0; m <= maxDerivative; ++m) q[m] = derivativePoly(piece.poly, piece.rate, m);
+    const bool realPoly = piece.rate == 0.0;
+    for (int i = 0; i < count; ++i) {
+      const double x = u[i] - piece.shift;
+      if (realPoly) {
+        for (int m = 0; m <= maxDerivative; ++m) {
+          double acc = 0.0;
+          for (size_t k = q[m].size(); k-- > 0;) acc = acc * x + q[m][k].real();
+          out[static_cast<size_t>(m) * count + i] += acc;
+        }
+      } else {
+        const cplx e = std::exp(piece.rate * x);
+        for (int m = 0; m <= maxDerivative; ++m)
+          out[static_cast<size_t>(m) * count + i] += (e * evalPoly(q[m], cplx(x))).real();
+      }
+    }
+  }
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,37 @@
+// A real function of u in closed form: G(u) = Re Σ_k e^{c_k (u - s_k)} P_k(u - s_k),
+// with complex rates c_k, shifts s_k and complex polynomials P_k. Every u-factor pdesurf
+// builds (exponentials, exponentials times polynomials, oscillating or growing, and plain
+// polynomials) has this form, so one evaluator serves every PDE order and basis family.
+// The shift keeps |e^{c(u-s)}| <= 1 on [0,1]: s = 1 when Re c > 0, so e^{ru} with large
+// positive r is never formed unscaled.
+#pragma once
+#include <complex>
+#include <vector>
+
+namespace pdesurf {
+
+using cplx = std::complex<double>;
+
+struct ExpPoly {
+  cplx rate = 0.0;             // c
+  double shift = 0.0;          // s
+  std::vector<cplx> poly;      // P, ascending powers of (u - s)
+};
+
+// Coefficients of (c + d/dx)^m P, ascending powers.
+std::vector<cplx> derivativePoly(const std::vector<cplx>& p, cplx rate, int m);
+cplx evalPoly(const std::vector<cplx>& p, cplx x);
+
+class UFactor {
+ public:
+  std::vector<ExpPoly> pieces;
+
+  static UFactor polynomial(const std::vector<double>& ascending);  // a real polynomial in u
+  // The m-th derivative at u.
+  double eval(double u, int m = 0) const;
+  // out[k * count + i] = G^{(k)}(u[i]) for k = 0..maxDerivative. Derivative polynomials are
+  // formed once per piece, the exponential once per point and piece.
+  void tabulate(const double* u, int count, int maxDerivative, double* out) const;
+};
+
+}  // namespace pdesurf

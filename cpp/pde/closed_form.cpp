@@ -1,0 +1,119 @@
+#include "pde/closed_form.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "ode/even_ode.hpp"
+#include "pde/poly_in_v.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+const char* kAxis[3] = {"x", "y", "z"};
+
+std::string describe(const VFunction& g) {
+  std::ostringstream s;
+  if (g.isPoly()) {
+    s << "v^" << g.n;
+  } else {
+    s << familyName(g.family) << "(" << g.w << "*v)";
+  }
+  return s.str();
+}
+
+// Boundary values of one v-basis function: values[end * n + i] = coefficient in ∂^i X/∂u^i at u=end.
+struct Grouped {
+  VFunction g;
+  std::vector<double> values;
+};
+
+std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
+  std::vector<Grouped> out;
+  for (int end = 0; end < 2; ++end) {
+    const auto& side = end == 0 ? p.left : p.right;
+    for (int i = 0; i < n; ++i)
+      for (const VTerm& t : side[i]) {
+        if (t.g.isPoly()) continue;
+        auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == t.g; });
+        if (it == out.end()) {
+          out.push_back({t.g, std::vector<double>(2 * n, 0.0)});
+          it = out.end() - 1;
+        }
+        it->values[end * n + i] += t.coef;
+      }
+  }
+  return out;
+}
+
+void solveComponent(const ComponentProblem& p, std::vector<SeparableTerm>& terms) {
+  const int n = static_cast<int>(p.alpha.size()) - 1;
+  if (n < 1) throw Error(ErrorCode::InvalidField, "the operator has no coefficients");
+  if (static_cast<int>(p.left.size()) != n || static_cast<int>(p.right.size()) != n)
+    throw Error(ErrorCode::InvalidField, "an order-" + std::to_string(2 * n) + " operator needs " + std::to_string(n) +
+                                             " boundary conditions at each end");
+  for (double a : p.alpha)
+    if (!std::isfinite(a)) throw Error(ErrorCode::NonFinite, "an operator coefficient is not finite");
+  if (p.alpha[0] == 0.0)
+    throw Error(ErrorCode::DegenerateOperator,
+                "the coefficient of the highest u-derivative (b) is 0: the PDE loses its order in u");
+
+  // Eigen-family terms: one ODE each; the basis is shared by terms with the same sigma.
+  std::vector<std::pair<double, std::shared_ptr<EvenOdeBasis>>> cache;
+  for (const Grouped& gr : groupEigenTerms(p, n)) {
+    try {
+      const double sigma = gr.g.sigma();
+      auto it = std::find_if(cache.begin(), cache.end(), [&](const auto& e) { return e.first == sigma; });
+      if (it == cache.end()) {
+        cache.emplace_back(sigma, std::make_shared<EvenOdeBasis>(p.alpha, sigma));
+        it = cache.end() - 1;
+      }
+      terms.push_back({gr.g, it->second->solve(gr.values.data(), gr.values.data() + n)});
+    } catch (const Error& e) {
+      throw Error(e.code(), "term " + describe(gr.g) + ": " + e.what());
+    }
+  }
+
+  // Polynomial terms: one triangular system over all powers.
+  int top = -1;
+  for (int end = 0; end < 2; ++end)
+    for (const VExpansion& ex : end == 0 ? p.left : p.right)
+      for (const VTerm& t : ex)
+        if (t.g.isPoly()) top = std::max(top, t.g.n);
+  if (top < 0) return;
+  std::vector<std::vector<std::vector<double>>> data(top + 1, std::vector<std::vector<double>>(2, std::vector<double>(n, 0.0)));
+  for (int end = 0; end < 2; ++end) {
+    const auto& side = end == 0 ? p.left : p.right;
+    for (int i = 0; i < n; ++i)
+      for (const VTerm& t : side[i])
+        if (t.g.isPoly()) data[t.g.n][end][i] += t.coef;
+  }
+  const auto g = solvePolyInV(p.alpha, data);
+  for (int m = 0; m <= top; ++m) {
+    VFunction f;
+    f.family = Family::Poly;
+    f.n = m;
+    terms.push_back({f, UFactor::polynomial(g[m])});
+  }
+}
+
+}  // namespace
+
+SeparableSurface solveClosedForm(const PdeProblem& problem) {
+  SeparableSurface s;
+  s.v0 = problem.v0;
+  s.v1 = problem.v1;
+  for (int c = 0; c < 3; ++c) {
+    try {
+      solveComponent(problem.component[c], s.component[c]);
+    } catch (const Error& e) {
+      throw Error(e.code(), std::string("component ") + kAxis[c] + ": " + e.what());
+    }
+  }
+  return s;
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,29 @@
+// A surface written as separable sums: each coordinate is Σ_t G_t(u) g_t(v) with a closed-form
+// u-factor G_t and a basis function g_t of v. Every surface pdesurf makes (PDE blends, ruled
+// primary surfaces) has this form, so evaluation, sampling and tessellation are shared.
+#pragma once
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "basis/vfunction.hpp"
+#include "ode/u_factor.hpp"
+
+namespace pdesurf {
+
+struct SeparableTerm {
+  VFunction g;
+  UFactor G;
+};
+
+struct SeparableSurface {
+  double u0 = 0.0, u1 = 1.0;  // u-range (t-range for ruled surfaces)
+  double v0 = 0.0, v1 = 0.0;
+  std::array<std::vector<SeparableTerm>, 3> component;  // x, y, z
+};
+
+// ∂^{du+dv} X_c / ∂u^du ∂v^dv at (u, v) for component c (0, 1, 2).
+double evalComponent(const SeparableSurface& s, int c, double u, double v, int du = 0, int dv = 0);
+Eigen::Vector3d evalPoint(const SeparableSurface& s, double u, double v, int du = 0, int dv = 0);
+
+}  // namespace pdesurf

@@ -1,0 +1,66 @@
+// Random boundary-value problems shared by the solver tests: random mixtures of every basis
+// family with random data, in each discriminant regime of the fourth-order operator.
+#pragma once
+#include <random>
+
+#include "pde/pde_problem.hpp"
+
+namespace pdesurf::testing {
+
+enum class Regime { RealDistinct, Repeated, Complex };
+
+// {b, c, d} with c² > 4bd, c² = 4bd or c² < 4bd.
+inline std::vector<double> fourthOrderAlpha(Regime regime, std::mt19937& rng) {
+  std::uniform_real_distribution<double> U(0.2, 3.0);
+  const double b = U(rng), d = U(rng);
+  const double crit = 2.0 * std::sqrt(b * d);
+  switch (regime) {
+    case Regime::RealDistinct: return {b, crit * (1.2 + U(rng)), d};
+    case Regime::Repeated: return {b * b, 2 * b * d, d * d};  // exactly c² = 4bd in floating point
+    case Regime::Complex: return {b, crit * (U(rng) - 0.2) / 3.0, d};
+  }
+  return {};
+}
+
+inline VExpansion randomExpansion(std::mt19937& rng, int terms) {
+  std::uniform_real_distribution<double> C(-2.0, 2.0);
+  std::uniform_real_distribution<double> W(0.1, 4.0);
+  std::uniform_int_distribution<int> F(0, 5), P(0, 4);
+  VExpansion e;
+  for (int k = 0; k < terms; ++k) {
+    VTerm t;
+    t.g.family = static_cast<Family>(F(rng));
+    t.g.w = t.g.family == Family::Exp || t.g.family == Family::Cosh || t.g.family == Family::Sinh ? W(rng) / 4 : W(rng);
+    t.g.n = P(rng);
+    t.coef = C(rng);
+    e.push_back(t);
+  }
+  return e;
+}
+
+inline PdeProblem randomProblem(const std::vector<double>& alpha, std::mt19937& rng, double v1 = 6.283185307179586) {
+  PdeProblem p;
+  p.v1 = v1;
+  const int n = static_cast<int>(alpha.size()) - 1;
+  for (auto& c : p.component) {
+    c.alpha = alpha;
+    for (int i = 0; i < n; ++i) {
+      c.left.push_back(randomExpansion(rng, 3));
+      c.right.push_back(randomExpansion(rng, 3));
+    }
+  }
+  return p;
+}
+
+inline double expansionValue(const VExpansion& e, double v, double* scale = nullptr) {
+  double s = 0.0, mag = 0.0;
+  for (const VTerm& t : e) {
+    const double x = t.coef * t.g.eval(v);
+    s += x;
+    mag += std::abs(x);
+  }
+  if (scale) *scale = mag;
+  return s;
+}
+
+}  // namespace pdesurf::testing

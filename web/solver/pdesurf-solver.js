@@ -1,0 +1,88 @@
+// Wrapper around the emscripten module (docs/wasm-api.md). The only place that
+// touches the module: it turns the module's result-or-error value into data or a
+// thrown PdesurfError, so callers never see an aborted module or a bare pointer.
+
+/** A solver failure with a machine-readable code (ParseError, InvalidField, ...). */
+export class PdesurfError extends Error {
+  constructor(code, message) {
+    super(message);
+    this.name = 'PdesurfError';
+    this.code = code;
+  }
+}
+
+const DEFAULT_MODULE_URL = '/wasm/pdesurf.js';
+
+/**
+ * Load the wasm module and return { solve(scene, {nu, nv}), module }.
+ * Browser: imports /wasm/pdesurf.js (the module finds pdesurf.wasm beside itself).
+ * Node: pass { moduleUrl, wasmBinary } (node's fetch cannot load a file path).
+ */
+export async function loadSolver(opts = {}) {
+  const moduleUrl = opts.moduleUrl || DEFAULT_MODULE_URL;
+  let factory;
+  try {
+    const mod = await import(/* @vite-ignore */ moduleUrl);
+    factory = mod.default;
+  } catch (err) {
+    throw new PdesurfError('Load', `cannot load the solver module ${moduleUrl}: ${err.message}`);
+  }
+  if (typeof factory !== 'function') {
+    throw new PdesurfError('Load', `${moduleUrl} has no default factory export`);
+  }
+  const moduleArgs = {};
+  if (opts.wasmBinary) moduleArgs.wasmBinary = opts.wasmBinary;
+  if (opts.locateFile) moduleArgs.locateFile = opts.locateFile;
+  // Keep emscripten's stdout/stderr out of the console unless asked for.
+  moduleArgs.print = opts.print || (() => {});
+  moduleArgs.printErr = opts.printErr || ((s) => console.warn('[pdesurf wasm]', s));
+  let Module;
+  try {
+    Module = await factory(moduleArgs);
+  } catch (err) {
+    throw new PdesurfError('Load', `cannot start the solver module: ${err && err.message ? err.message : err}`);
+  }
+  if (typeof Module.solveScene !== 'function') {
+    throw new PdesurfError('Load', 'the solver module has no solveScene function');
+  }
+  return {
+    module: Module,
+    solve: (scene, grid = {}) => solveWith(Module, scene, grid),
+  };
+}
+
+function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
+  const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  let res;
+  try {
+    res = Module.solveScene(text, nu, nv);
+  } catch (err) {
+    // Should not happen (the binding catches), but never let a raw throw escape.
+    const msg = err instanceof Error ? err.message : `solver threw ${String(err)}`;
+    throw new PdesurfError('Internal', msg);
+  }
+  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', 'solver returned no result');
+  if (!res.ok) {
+    const e = res.error || {};
+    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown solver error'));
+  }
+  return { patches: Array.from(res.patches || [], normalisePatch) };
+}
+
+// Copy into owned typed arrays of the documented types (views over the wasm heap
+// would go stale when it grows).
+function normalisePatch(p) {
+  const out = {
+    name: String(p.name),
+    kind: String(p.kind),
+    positions: new Float32Array(p.positions),
+    normals: new Float32Array(p.normals),
+    uvs: new Float32Array(p.uvs),
+    indices: new Uint32Array(p.indices),
+  };
+  if (p.operator) {
+    const vec = (x) => (typeof x === 'number' ? [x, x, x] : Array.from(x, Number));
+    out.operator = { order: Number(p.operator.order), b: vec(p.operator.b), c: vec(p.operator.c), d: vec(p.operator.d) };
+  }
+  return out;
+}

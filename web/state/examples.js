@@ -1,0 +1,46 @@
+// Fetching the example catalogue and scenes. Errors become messages a user can act
+// on (which URL, which HTTP status) because they end up in the status line.
+
+const EXAMPLES_BASE = '/examples/';
+
+async function fetchJson(url) {
+  let res;
+  try {
+    res = await fetch(url, { cache: 'no-cache' });
+  } catch (err) {
+    throw new Error(`cannot fetch ${url}: ${err.message}`);
+  }
+  if (!res.ok) throw new Error(`cannot fetch ${url}: HTTP ${res.status}`);
+  const text = await res.text();
+  try {
+    return JSON.parse(text);
+  } catch (err) {
+    throw new Error(`${url} is not valid JSON: ${err.message}`);
+  }
+}
+
+/** The catalogue: [{ id, title, file, source }] in the order of examples/index.json. */
+export async function loadExampleIndex() {
+  const data = await fetchJson(EXAMPLES_BASE + 'index.json');
+  const list = data && Array.isArray(data.examples) ? data.examples : null;
+  if (!list || list.length === 0) throw new Error('examples/index.json lists no examples');
+  return list.map((e, i) => {
+    if (!e || typeof e.id !== 'string' || typeof e.file !== 'string') {
+      throw new Error(`examples/index.json: entry ${i} needs string "id" and "file"`);
+    }
+    return { id: e.id, title: typeof e.title === 'string' ? e.title : e.id, file: e.file, source: e.source || null };
+  });
+}
+
+/** The scene object of one catalogue entry (a fresh object: it becomes page state). */
+export async function loadExampleScene(entry) {
+  // Files are plain relative names inside examples/; anything else is refused.
+  if (!/^[A-Za-z0-9_\-./]+$/.test(entry.file) || entry.file.split('/').includes('..') || entry.file.startsWith('/')) {
+    throw new Error(`example "${entry.id}": refusing file name ${JSON.stringify(entry.file)}`);
+  }
+  const scene = await fetchJson(EXAMPLES_BASE + entry.file);
+  if (!scene || typeof scene !== 'object' || Array.isArray(scene)) {
+    throw new Error(`${entry.file} does not hold a scene object`);
+  }
+  return scene;
+}

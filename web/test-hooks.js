@@ -1,0 +1,29 @@
+// window.__pdesurf: read-only view of the page for the browser tests (and for
+// debugging from the console). The page updates the plain fields as it goes.
+
+/** Order-sensitive summary of the drawn positions: Σ (k+1)·(|x|+|y|+|z|) / V per array. */
+export function checksumOf(arrays) {
+  let total = 0;
+  for (const a of arrays) {
+    const V = a.length / 3;
+    let s = 0;
+    for (let k = 0; k < V; k++) {
+      s += (k + 1) * (Math.abs(a[3 * k]) + Math.abs(a[3 * k + 1]) + Math.abs(a[3 * k + 2]));
+    }
+    total += V > 0 ? s / V : 0;
+  }
+  return total;
+}
+
+export function installTestHooks(getPositionArrays) {
+  const hooks = {
+    ready: false, // true once the first mesh is drawn
+    solveCount: 0, // solve attempts, failed ones included
+    lastError: null, // message of the latest failure; null after a good solve
+    exampleId: null,
+    checksum: () => checksumOf(getPositionArrays()),
+    vertexCount: () => getPositionArrays().reduce((n, a) => n + a.length / 3, 0),
+  };
+  window.__pdesurf = hooks;
+  return hooks;
+}

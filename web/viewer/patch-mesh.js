@@ -1,0 +1,41 @@
+// Turning one solved patch (typed arrays from the solver) into a three.js mesh.
+import * as THREE from 'three';
+
+// Blends (kind "pde") in one colour, the primary surfaces they join in another.
+export const BLEND_COLOR = 0xe8913a;
+export const PRIMARY_COLOR = 0x7fa3c8;
+
+function makeMaterial(color) {
+  // DoubleSide: open patches are seen from both sides while orbiting.
+  return new THREE.MeshStandardMaterial({
+    color,
+    roughness: 0.55,
+    metalness: 0.05,
+    side: THREE.DoubleSide,
+  });
+}
+
+const materials = {
+  blend: makeMaterial(BLEND_COLOR),
+  primary: makeMaterial(PRIMARY_COLOR),
+};
+
+/** BufferGeometry from { positions, normals, uvs, indices }. */
+export function geometryFromPatch(patch) {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(patch.positions, 3));
+  g.setAttribute('normal', new THREE.BufferAttribute(patch.normals, 3));
+  g.setAttribute('uv', new THREE.BufferAttribute(patch.uvs, 2));
+  g.setIndex(new THREE.BufferAttribute(patch.indices, 1));
+  g.computeBoundingBox();
+  g.computeBoundingSphere();
+  return g;
+}
+
+/** A mesh for one patch; userData keeps the name and kind for lookups and tests. */
+export function meshFromPatch(patch) {
+  const mesh = new THREE.Mesh(geometryFromPatch(patch), patch.kind === 'pde' ? materials.blend : materials.primary);
+  mesh.name = patch.name;
+  mesh.userData = { kind: patch.kind, patchName: patch.name };
+  return mesh;
+}

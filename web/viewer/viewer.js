@@ -1,0 +1,77 @@
+// The 3D view: renderer, camera, orbit controls, lights and the patch meshes.
+// Renders on demand (after a change or a camera move) to keep idle CPU at zero.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { meshFromPatch } from './patch-mesh.js';
+import { fitCameraToObject } from './fit-camera.js';
+
+export const BACKGROUND = 0x20242b;
+
+export function createViewer(container) {
+  const renderer = new THREE.WebGLRenderer({ antialias: true });
+  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  renderer.setClearColor(BACKGROUND, 1);
+  container.appendChild(renderer.domElement);
+
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
+  camera.up.set(0, 0, 1); // scenes are modelled with z up; set before the controls read it
+  camera.position.set(6, -8, 5);
+
+  // Lights ride with the camera so the surface facing the user is always lit.
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x404048, 1.4));
+  const key = new THREE.DirectionalLight(0xffffff, 1.6);
+  key.position.set(1, 1.5, 2);
+  camera.add(key);
+  scene.add(camera);
+
+  const surfaces = new THREE.Group();
+  scene.add(surfaces);
+
+  const controls = new OrbitControls(camera, renderer.domElement);
+  controls.addEventListener('change', render);
+
+  function render() {
+    renderer.render(scene, camera);
+  }
+
+  function resize() {
+    const w = Math.max(1, container.clientWidth);
+    const h = Math.max(1, container.clientHeight);
+    renderer.setSize(w, h, false);
+    camera.aspect = w / h;
+    camera.updateProjectionMatrix();
+    render();
+  }
+  new ResizeObserver(resize).observe(container);
+  resize();
+
+  return {
+    renderer,
+    camera,
+    controls,
+
+    /** Replace the drawn patches with freshly solved ones. */
+    setPatches(patches) {
+      for (const m of [...surfaces.children]) {
+        surfaces.remove(m);
+        m.geometry.dispose(); // materials are shared, keep them
+      }
+      for (const p of patches) surfaces.add(meshFromPatch(p));
+      render();
+    },
+
+    /** Frame everything drawn (on example change only: slider moves keep the view). */
+    fit() {
+      fitCameraToObject(camera, controls, surfaces);
+      render();
+    },
+
+    /** Position arrays of the drawn meshes, in draw order. */
+    positionArrays() {
+      return surfaces.children.map((m) => m.geometry.getAttribute('position').array);
+    },
+
+    render,
+  };
+}
