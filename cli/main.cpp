@@ -1,1 +1,23 @@
-int main() { return 0; }
+#include <iostream>
+
+#include "cli.hpp"
+#include "common/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace pdesurf::cli;
+  Options o;
+  try {
+    o = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const std::exception& e) {
+    std::cerr << "pdesurf: " << e.what() << "\n" << kUsage;
+    return 1;
+  }
+  try {
+    return o.command == "sample" ? runSample(o, std::cout) : runExport(o);
+  } catch (const pdesurf::Error& e) {
+    std::cerr << "pdesurf: " << o.scenePath << ": " << pdesurf::errorCodeName(e.code()) << ": " << e.what() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "pdesurf: " << e.what() << "\n";
+  }
+  return 1;
+}

@@ -1,0 +1,61 @@
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "cli.hpp"
+
+namespace pdesurf::cli {
+
+const char* kUsage =
+    "usage:\n"
+    "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV]   print u,v,x,y,z on the grid\n"
+    "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]      write every patch as OBJ\n";
+
+namespace {
+void parseGrid(const std::string& s, Options& o) {
+  const size_t x = s.find('x');
+  try {
+    size_t used = 0;
+    if (x == std::string::npos) throw std::invalid_argument("");
+    o.nu = std::stoi(s.substr(0, x), &used);
+    if (used != x) throw std::invalid_argument("");
+    o.nv = std::stoi(s.substr(x + 1), &used);
+    if (used != s.size() - x - 1) throw std::invalid_argument("");
+  } catch (const std::logic_error&) {
+    throw std::runtime_error("--grid expects NUxNV, e.g. 64x64, got '" + s + "'");
+  }
+}
+}  // namespace
+
+Options parseArgs(const std::vector<std::string>& args) {
+  if (args.empty()) throw std::runtime_error("missing command");
+  Options o;
+  o.command = args[0];
+  if (o.command != "sample" && o.command != "export") throw std::runtime_error("unknown command '" + o.command + "'");
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::runtime_error(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--patch") o.patch = value();
+    else if (a == "--grid") parseGrid(value(), o);
+    else if (a == "-o" || a == "--output") o.output = value();
+    else if (!a.empty() && a[0] == '-') throw std::runtime_error("unknown option '" + a + "'");
+    else if (o.scenePath.empty()) o.scenePath = a;
+    else throw std::runtime_error("unexpected argument '" + a + "'");
+  }
+  if (o.scenePath.empty()) throw std::runtime_error("missing SCENE.json");
+  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE.obj");
+  return o;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read '" + path + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace pdesurf::cli

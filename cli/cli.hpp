@@ -1,0 +1,23 @@
+// The pdesurf command-line tool: the same core as the page, with file I/O.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace pdesurf::cli {
+
+struct Options {
+  std::string command, scenePath, patch, output;
+  int nu = 16, nv = 16;
+};
+
+// Throws std::runtime_error with a usage message.
+Options parseArgs(const std::vector<std::string>& args);
+std::string readFile(const std::string& path);
+
+int runSample(const Options& o, std::ostream& out);
+int runExport(const Options& o);
+
+extern const char* kUsage;
+
+}  // namespace pdesurf::cli

@@ -1,0 +1,62 @@
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+
+#include "cli.hpp"
+#include "common/errors.hpp"
+#include "scene/scene.hpp"
+#include "surface/mesh.hpp"
+
+namespace pdesurf::cli {
+
+int runSample(const Options& o, std::ostream& out) {
+  const Scene scene = parseScene(readFile(o.scenePath));
+  const Patch* patch = o.patch.empty() ? scene.firstPde() : scene.find(o.patch);
+  if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE patch" : "no patch named '" + o.patch + "'");
+  const GridSamples g = sampleGrid(solvePatch(*patch), o.nu, o.nv);
+  out << "u,v,x,y,z\n";
+  char line[160];
+  for (int j = 0; j <= g.nv; ++j)
+    for (int i = 0; i <= g.nu; ++i) {
+      const double* X = &g.X[3 * (static_cast<size_t>(j) * (g.nu + 1) + i)];
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,%.17g\n", g.u[i], g.v[j], X[0], X[1], X[2]);
+      out << line;
+    }
+  return 0;
+}
+
+int runExport(const Options& o) {
+  const Scene scene = parseScene(readFile(o.scenePath));
+  const auto solved = solveScene(scene);
+  std::ofstream f(o.output, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
+  f << "# pdesurf export: " << scene.title << "\n";
+  size_t base = 1;  // OBJ indices are 1-based and global across objects
+  char line[160];
+  for (const SolvedPatch& sp : solved) {
+    const Mesh m = tessellate(sp.surface, o.nu, o.nv);
+    f << "o " << sp.patch->name << "\n";
+    for (size_t k = 0; k < m.vertexCount(); ++k) {
+      std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", m.positions[3 * k], m.positions[3 * k + 1], m.positions[3 * k + 2]);
+      f << line;
+    }
+    for (size_t k = 0; k < m.vertexCount(); ++k) {
+      std::snprintf(line, sizeof line, "vt %.9g %.9g\n", m.uvs[2 * k], m.uvs[2 * k + 1]);
+      f << line;
+    }
+    for (size_t k = 0; k < m.vertexCount(); ++k) {
+      std::snprintf(line, sizeof line, "vn %.9g %.9g %.9g\n", m.normals[3 * k], m.normals[3 * k + 1], m.normals[3 * k + 2]);
+      f << line;
+    }
+    for (size_t t = 0; t < m.indices.size(); t += 3) {
+      const size_t a = base + m.indices[t], b = base + m.indices[t + 1], c = base + m.indices[t + 2];
+      f << "f " << a << '/' << a << '/' << a << ' ' << b << '/' << b << '/' << b << ' ' << c << '/' << c << '/' << c << "\n";
+    }
+    base += m.vertexCount();
+  }
+  if (!f) throw std::runtime_error("writing '" + o.output + "' failed");
+  return 0;
+}
+
+}  // namespace pdesurf::cli

@@ -1,0 +1,28 @@
+// Tabulated factors of a separable surface on a uniform (nu+1)×(nv+1) grid: each term's
+// u-factor (value and first derivative) on the u-grid and v-factor (value and first
+// derivative) on the v-grid, computed once. Combining them is then pure multiply-add:
+//   X(u_i, v_j) = Σ_t G_t(u_i) g_t(v_j),  X_u = Σ G_t' g_t,  X_v = Σ G_t g_t'.
+#pragma once
+#include <vector>
+
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf {
+
+struct Tabulation {
+  int nu = 0, nv = 0;
+  std::vector<double> u, v;  // grid values, nu+1 and nv+1 entries
+  // Per component c: T_c terms. uTab[c][i * 2T + 2t + k] = G_t^{(k)}(u_i), k = 0, 1;
+  // vTab[c][j * 2T + 2t + k] = g_t^{(k)}(v_j).
+  std::array<int, 3> terms{};
+  std::array<std::vector<double>, 3> uTab, vTab;
+};
+
+// Throws Error(GridSize) outside 1..2048 per direction, Error(NonFinite) when a factor is not
+// finite at a grid point.
+Tabulation tabulate(const SeparableSurface& s, int nu, int nv);
+
+constexpr int kMaxGrid = 2048;
+void checkGrid(int nu, int nv);
+
+}  // namespace pdesurf

@@ -1,0 +1,89 @@
+// embind bindings: the only platform code of the wasm build. Every call returns plain data
+// ({ok, patches} or {ok: false, error: {code, message}}); no exception crosses into JS, so
+// the module never aborts and holds no long-lived objects that JS would have to delete().
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <new>
+
+#include "common/errors.hpp"
+#include "scene/scene.hpp"
+#include "surface/mesh.hpp"
+#include "surface/tabulation.hpp"
+
+using emscripten::val;
+using namespace pdesurf;
+
+namespace {
+
+// A copy, not a view: views into the wasm heap go stale when the heap grows.
+template <class T>
+val copyOut(const std::vector<T>& v) {
+  return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
+}
+
+val numbers(const std::array<double, 3>& a) {
+  val out = val::array();
+  for (double x : a) out.call<void>("push", x);
+  return out;
+}
+
+val operatorOf(const Patch& p) {
+  val op = val::object();
+  op.set("order", p.order);
+  const char* names[3] = {"b", "c", "d"};
+  for (int k = 0; k < 3; ++k)
+    op.set(names[k], numbers({p.pde.component[0].alpha[k], p.pde.component[1].alpha[k], p.pde.component[2].alpha[k]}));
+  return op;
+}
+
+val failure(const char* code, const std::string& message) {
+  val err = val::object();
+  err.set("code", std::string(code));
+  err.set("message", message);
+  val r = val::object();
+  r.set("ok", false);
+  r.set("error", err);
+  return r;
+}
+
+val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
+  try {
+    checkGrid(nu, nv);
+    const Scene scene = parseScene(sceneJson);
+    const auto solved = solveScene(scene);
+    val patches = val::array();
+    for (const SolvedPatch& sp : solved) {
+      const Mesh m = tessellate(sp.surface, nu, nv);
+      val p = val::object();
+      p.set("name", sp.patch->name);
+      p.set("kind", std::string(patchKindName(sp.patch->kind)));
+      if (sp.patch->kind == PatchKind::Pde) p.set("operator", operatorOf(*sp.patch));
+      p.set("positions", copyOut(m.positions));
+      p.set("normals", copyOut(m.normals));
+      p.set("uvs", copyOut(m.uvs));
+      p.set("indices", copyOut(m.indices));
+      patches.call<void>("push", p);
+    }
+    val r = val::object();
+    r.set("ok", true);
+    r.set("title", scene.title);
+    r.set("patches", patches);
+    return r;
+  } catch (const Error& e) {
+    return failure(errorCodeName(e.code()), e.what());
+  } catch (const std::bad_alloc&) {
+    return failure("Internal", "out of memory: try a smaller grid");
+  } catch (const std::exception& e) {
+    return failure("Internal", e.what());
+  }
+}
+
+std::string version() { return "0.1.0"; }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(pdesurf) {
+  emscripten::function("solveScene", &solveSceneJs);
+  emscripten::function("version", &version);
+}
