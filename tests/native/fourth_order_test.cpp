@@ -9,49 +9,11 @@
 #include "ode/even_ode.hpp"
 #include "pde/closed_form.hpp"
 #include "random_problem.hpp"
+#include "test_util.hpp"
 
 using namespace pdesurf;
 using namespace pdesurf::testing;
 
-namespace {
-
-// Largest relative boundary-condition error over components, ends and derivative orders.
-double boundaryError(const PdeProblem& p, const SeparableSurface& s) {
-  double worst = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    const auto& cp = p.component[c];
-    const int n = static_cast<int>(cp.alpha.size()) - 1;
-    for (int end = 0; end < 2; ++end)
-      for (int i = 0; i < n; ++i)
-        for (int k = 0; k <= 40; ++k) {
-          const double v = p.v0 + (p.v1 - p.v0) * k / 40;
-          double scale = 0.0;
-          const double want = expansionValue((end == 0 ? cp.left : cp.right)[i], v, &scale);
-          const double got = evalComponent(s, c, end, v, i, 0);
-          worst = std::max(worst, std::abs(got - want) / std::max(1.0, scale));
-        }
-  }
-  return worst;
-}
-
-// |L X| relative to the sizes of its three parts, at interior points.
-double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
-  double worst = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    const auto& a = p.component[c].alpha;
-    for (int iu = 1; iu < 10; ++iu)
-      for (int iv = 0; iv <= 10; ++iv) {
-        const double u = iu / 10.0, v = p.v0 + (p.v1 - p.v0) * iv / 10;
-        const double t0 = a[0] * evalComponent(s, c, u, v, 4, 0);
-        const double t1 = a[1] * evalComponent(s, c, u, v, 2, 2);
-        const double t2 = a[2] * evalComponent(s, c, u, v, 0, 4);
-        worst = std::max(worst, std::abs(t0 + t1 + t2) / std::max(1.0, std::abs(t0) + std::abs(t1) + std::abs(t2)));
-      }
-  }
-  return worst;
-}
-
-}  // namespace
 
 TEST_CASE("fourth order: boundary conditions and PDE residual for random mixtures in every root regime") {
   std::mt19937 rng(20261122);

@@ -52,15 +52,4 @@ inline PdeProblem randomProblem(const std::vector<double>& alpha, std::mt19937& 
   return p;
 }
 
-inline double expansionValue(const VExpansion& e, double v, double* scale = nullptr) {
-  double s = 0.0, mag = 0.0;
-  for (const VTerm& t : e) {
-    const double x = t.coef * t.g.eval(v);
-    s += x;
-    mag += std::abs(x);
-  }
-  if (scale) *scale = mag;
-  return s;
-}
-
 }  // namespace pdesurf::testing

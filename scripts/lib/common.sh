@@ -1,0 +1,54 @@
+# Shared by scripts/serve and scripts/test: idempotent set-up and the two builds.
+# Source it; every function is safe to run again on a machine that already has everything.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+BUILD="${PDESURF_BUILD_DIR:-$ROOT/build}"
+export NODE_PATH=/usr/share/nodejs  # emscripten's optimiser needs Debian's acorn (toolchain note 1)
+
+APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev chromium nodejs)
+
+log() { printf '\033[1m== %s\033[0m\n' "$*"; }
+
+install_system_packages() {
+  local missing=()
+  for p in "${APT_PACKAGES[@]}"; do
+    # nodejs may come from NodeSource or Debian; any node >= 18 will do.
+    if [ "$p" = nodejs ] && command -v node >/dev/null 2>&1; then continue; fi
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+install_npm_packages() {
+  # npm ci only when the lock file changed since the last install.
+  local stamp="$ROOT/node_modules/.pdesurf-lock-sha"
+  local want
+  want="$(sha256sum "$ROOT/package-lock.json" | cut -d' ' -f1)"
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ]; then return 0; fi
+  log "npm ci"
+  (cd "$ROOT" && npm ci --no-audit --no-fund)
+  echo "$want" >"$stamp"
+}
+
+setup() {
+  install_system_packages
+  install_npm_packages
+}
+
+build_native() {
+  log "native build ($BUILD/native)"
+  cmake -S "$ROOT" -B "$BUILD/native" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$BUILD/native" -j"$(nproc)"
+}
+
+build_wasm() {
+  log "wasm build ($BUILD/wasm)"
+  emcmake cmake -S "$ROOT" -B "$BUILD/wasm" -DCMAKE_BUILD_TYPE=Release \
+    -DEigen3_DIR=/usr/share/eigen3/cmake -DCMAKE_CROSSCOMPILING_EMULATOR="$(command -v node)" >/dev/null
+  cmake --build "$BUILD/wasm" -j"$(nproc)"
+}

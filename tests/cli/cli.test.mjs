@@ -1,0 +1,81 @@
+// The pdesurf CLI as a user runs it: output shape, precision, boundary values, exit codes.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const root = new URL('../../', import.meta.url).pathname;
+const cli = process.env.PDESURF_CLI ?? join(root, 'build/native/pdesurf');
+const example = (id) => join(root, 'examples', `${id}.json`);
+const run = (...args) => spawnSync(cli, args, { encoding: 'utf8' });
+
+function parseCsv(text) {
+  const [header, ...lines] = text.trim().split('\n');
+  assert.equal(header, 'u,v,x,y,z');
+  return lines.map((l) => l.split(',').map(Number));
+}
+
+test('sample prints (nu+1)(nv+1) rows including both ends, at full precision', () => {
+  const r = run('sample', example('you2004-fig2a'), '--grid', '4x6');
+  assert.equal(r.status, 0, r.stderr);
+  const rows = parseCsv(r.stdout);
+  assert.equal(rows.length, 5 * 7);
+  const us = new Set(rows.map((x) => x[0]));
+  assert.deepEqual([...us].sort((a, b) => a - b), [0, 0.25, 0.5, 0.75, 1]);
+  assert.equal(Math.max(...rows.map((x) => x[1])), 2 * Math.PI);
+  // u = 0 lies on the plane's trimline circle r0 = 1.8, u = 1 on the cone's (r1 = 0.6, h1 = 2).
+  for (const [u, v, x, y, z] of rows) {
+    if (u === 0) {
+      assert.ok(Math.abs(Math.hypot(x, y) - 1.8) < 1e-12 && Math.abs(z) < 1e-12);
+    }
+    if (u === 1) {
+      assert.ok(Math.abs(x - 0.6 * Math.cos(v)) < 1e-12 && Math.abs(z - 2) < 1e-12);
+    }
+  }
+  assert.match(r.stdout, /\d\.\d{12,}/, 'full precision digits');
+});
+
+test('sample --patch picks a primary surface', () => {
+  const r = run('sample', example('you2004-fig4a'), '--patch', 'plane', '--grid', '2x2');
+  assert.equal(r.status, 0, r.stderr);
+  const rows = parseCsv(r.stdout);
+  assert.equal(rows.length, 9);
+  assert.ok(rows.every((row) => Math.abs(row[4]) < 1e-15), 'the plane is z = 0');
+});
+
+test('export writes an OBJ with every patch', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'pdesurf-cli-'));
+  const out = join(dir, 'fig4a.obj');
+  const r = run('export', example('you2004-fig4a'), '-o', out, '--grid', '8x8');
+  assert.equal(r.status, 0, r.stderr);
+  const obj = readFileSync(out, 'utf8');
+  assert.deepEqual(obj.match(/^o .*/gm), ['o blend', 'o cylinder', 'o plane']);
+  assert.equal(obj.match(/^v /gm).length, 3 * 81);
+  assert.equal(obj.match(/^f /gm).length, 3 * 128);
+});
+
+test('errors go to stderr with exit code 1 and name the field', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'pdesurf-cli-'));
+  const cases = [
+    [['sample', example('you2004-fig2a'), '--grid', '0x8'], /GridSize/],
+    [['sample', example('you2004-fig2a'), '--grid', '4096x8'], /GridSize/],
+    [['sample', example('you2004-fig2a'), '--grid', 'abc'], /--grid expects NUxNV/],
+    [['sample', join(dir, 'missing.json')], /cannot read/],
+    [['sample', example('you2004-fig2a'), '--patch', 'nope'], /no patch named 'nope'/],
+    [['frobnicate'], /unknown command/],
+  ];
+  const bad = join(dir, 'bad.json');
+  writeFileSync(bad, readFileSync(example('you2004-fig2a'), 'utf8').replace('"coef": "r0p"', '"coef": "r0q"'));
+  cases.push([['sample', bad], /patches\[0\]\.boundary\.x\.u0\[1\]\[0\]\.coef: col 1: unknown parameter 'r0q'/]);
+  const zeroB = join(dir, 'zero-b.json');
+  writeFileSync(zeroB, readFileSync(example('you2004-fig2a'), 'utf8').replace('"b": 1,', '"b": [1, 1, 0],'));
+  cases.push([['sample', zeroB], /DegenerateOperator: patches\[0\]\.operator\.b\[2\]/]);
+  for (const [args, message] of cases) {
+    const r = run(...args);
+    assert.equal(r.status, 1, `${args.join(' ')}: exit ${r.status}`);
+    assert.equal(r.stdout, '', 'nothing on stdout');
+    assert.match(r.stderr, message);
+  }
+});

@@ -1,0 +1,112 @@
+// Bad scenes get named errors that point at the field; nothing crashes.
+#include <doctest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "ode/even_ode.hpp"
+#include "scene/scene.hpp"
+#include "surface/mesh.hpp"
+#include "test_util.hpp"
+
+using namespace pdesurf;
+using namespace pdesurf::testing;
+using nlohmann::json;
+
+namespace {
+
+json fig2a() { return json::parse(readText(examplePath("you2004-fig2a.json"))); }
+
+// Returns "Code: message" of the error parse+solve+tessellate raises, or "ok".
+std::string outcome(const std::string& text, int nu = 8, int nv = 8) {
+  try {
+    for (const SolvedPatch& sp : solveScene(parseScene(text))) tessellate(sp.surface, nu, nv);
+  } catch (const Error& e) {
+    return std::string(errorCodeName(e.code())) + ": " + e.what();
+  }
+  return "ok";
+}
+
+std::string outcomeOf(const json& j) { return outcome(j.dump()); }
+
+}  // namespace
+
+TEST_CASE("scene errors: malformed text") {
+  CHECK(outcome("{\"format\": ") == "ParseError: malformed JSON at byte 12");
+  CHECK(outcome("[1, 2]") == "InvalidField: scene: expected an object");
+  CHECK(outcome(std::string(40, '[') + std::string(40, ']')).find("nested deeper") != std::string::npos);
+  CHECK(outcome("{\"x\": 1e999}").rfind("ParseError", 0) == 0);
+  CHECK(outcome(std::string(2 << 20, ' ')).find("larger than 1 MiB") != std::string::npos);
+}
+
+TEST_CASE("scene errors: fields") {
+  json j = fig2a();
+  j["format"] = "other";
+  CHECK(outcomeOf(j) == "InvalidField: format: expected \"pdesurf-scene\"");
+  j = fig2a();
+  j["version"] = 7;
+  CHECK(outcomeOf(j) == "InvalidField: version: this build reads scene version 1");
+  j = fig2a();
+  j["colour"] = "red";
+  CHECK(outcomeOf(j) == "InvalidField: scene.colour: unknown field");
+  j = fig2a();
+  j.erase("patches");
+  CHECK(outcomeOf(j) == "InvalidField: scene.patches: missing");
+  j = fig2a();
+  j["parameters"]["r0"]["value"] = 99;
+  CHECK(outcomeOf(j).rfind("InvalidField: parameters.r0.value: outside [min, max]", 0) == 0);
+  j = fig2a();
+  j["parameters"]["pi"] = {{"value", 1}, {"min", 0}, {"max", 2}};
+  CHECK(outcomeOf(j) == "InvalidField: parameters.pi: 'pi' is reserved");
+  j = fig2a();
+  j["patches"][0]["boundary"]["x"]["u0"][0][0]["fn"] = "cosine";
+  CHECK(outcomeOf(j) == "UnknownName: patches[0].boundary.x.u0[0][0].fn: unknown basis function 'cosine' (poly, cos, sin, exp, cosh, sinh)");
+  j = fig2a();
+  j["patches"][0]["boundary"]["z"]["u1"] = json::array({json::array(), json::array(), json::array()});
+  CHECK(outcomeOf(j) == "InvalidField: patches[0].boundary.z.u1: expected at most 2 conditions [X, dX/du]");
+  j = fig2a();
+  j["patches"][0]["operator"]["order"] = 3;
+  CHECK(outcomeOf(j) == "InvalidField: patches[0].operator.order: order must be 4");
+  j = fig2a();
+  j["patches"][1]["name"] = "blend";
+  CHECK(outcomeOf(j) == "InvalidField: patches[1].name: duplicate patch name 'blend'");
+  j = fig2a();
+  j["patches"][1]["meets"]["patch"] = "nowhere";
+  CHECK(outcomeOf(j) == "UnknownName: patches[1].meets.patch: no PDE patch named 'nowhere'");
+  j = fig2a();
+  j["patches"][0]["v_range"] = {1, 0};
+  CHECK(outcomeOf(j) == "InvalidField: patches[0].v_range: end must be greater than start");
+}
+
+TEST_CASE("scene errors: non-finite and degenerate numbers") {
+  json j = fig2a();
+  j["patches"][0]["operator"]["c"] = "exp(1000)";
+  CHECK(outcomeOf(j) == "NonFinite: patches[0].operator.c: col 1: exp(1000.000000) is not finite");
+  j = fig2a();
+  j["patches"][0]["operator"]["b"] = json::array({1, 0, 1});
+  CHECK(outcomeOf(j) == "DegenerateOperator: patches[0].operator.b[1]: b_y = 0 removes the fourth u-derivative: the PDE loses its order");
+  j = fig2a();
+  j["patches"][0]["boundary"]["x"]["u0"][0].push_back({{"fn", "exp"}, {"w", 200}});
+  CHECK(outcomeOf(j) == "NonFinite: component x: a v-basis function overflows on the v-range");
+}
+
+TEST_CASE("scene errors: grid sizes") {
+  const std::string text = fig2a().dump();
+  CHECK(outcome(text, 0, 8) == "GridSize: grid 0x8 is outside 1x1 .. 2048x2048");
+  CHECK(outcome(text, 8, 2049) == "GridSize: grid 8x2049 is outside 1x1 .. 2048x2048");
+  CHECK(outcome(text, -5, 8).rfind("GridSize", 0) == 0);
+  CHECK(outcome(text, 1, 1) == "ok");
+}
+
+TEST_CASE("two-point problems without a unique solution are reported, not solved") {
+  // G'' + pi² G = 0 with G(0) = G(1) = 0 has the solution sin(pi u) besides 0.
+  try {
+    EvenOdeBasis basis({1.0, -1.0}, -M_PI * M_PI);
+    FAIL("expected Singular");
+  } catch (const Error& e) {
+    CHECK(e.code() == ErrorCode::Singular);
+  }
+  // Slightly off resonance the problem is fine.
+  CHECK_NOTHROW(EvenOdeBasis({1.0, -1.0}, -M_PI * M_PI * 1.1));
+}

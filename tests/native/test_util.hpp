@@ -1,0 +1,73 @@
+// Helpers shared by the native tests: reading example files, boundary and PDE residual checks.
+#pragma once
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "pde/pde_problem.hpp"
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf::testing {
+
+inline std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline std::string examplePath(const std::string& file) { return std::string(PDESURF_EXAMPLES_DIR) + "/" + file; }
+
+inline double expansionAt(const VExpansion& e, double v, double* scale = nullptr) {
+  double s = 0.0, mag = 0.0;
+  for (const VTerm& t : e) {
+    const double x = t.coef * t.g.eval(v);
+    s += x;
+    mag += std::abs(x);
+  }
+  if (scale) *scale = mag;
+  return s;
+}
+
+// Largest boundary-condition error over components, ends, derivative orders and 41 v-samples,
+// relative to max(1, Σ|terms|).
+inline double boundaryError(const PdeProblem& p, const SeparableSurface& s) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto& cp = p.component[c];
+    const int n = static_cast<int>(cp.alpha.size()) - 1;
+    for (int end = 0; end < 2; ++end)
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k <= 40; ++k) {
+          const double v = p.v0 + (p.v1 - p.v0) * k / 40;
+          double scale = 0.0;
+          const double want = expansionAt((end == 0 ? cp.left : cp.right)[i], v, &scale);
+          const double got = evalComponent(s, c, end, v, i, 0);
+          worst = std::max(worst, std::abs(got - want) / std::max(1.0, scale));
+        }
+  }
+  return worst;
+}
+
+// |Σ_k alpha_k ∂u^{2(n-k)} ∂v^{2k} X| relative to Σ_k |each part|, at interior grid points.
+inline double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto& a = p.component[c].alpha;
+    const int n = static_cast<int>(a.size()) - 1;
+    for (int iu = 1; iu < 10; ++iu)
+      for (int iv = 0; iv <= 10; ++iv) {
+        const double u = iu / 10.0, v = p.v0 + (p.v1 - p.v0) * iv / 10;
+        double sum = 0.0, mag = 0.0;
+        for (int k = 0; k <= n; ++k) {
+          const double part = a[k] * evalComponent(s, c, u, v, 2 * (n - k), 2 * k);
+          sum += part;
+          mag += std::abs(part);
+        }
+        worst = std::max(worst, std::abs(sum) / std::max(1.0, mag));
+      }
+  }
+  return worst;
+}
+
+}  // namespace pdesurf::testing
