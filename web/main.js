@@ -63,7 +63,7 @@ async function start() {
   async function openExample(id) {
     let entry = examples.find((e) => e.id === id);
     if (!entry) {
-      notice = `unknown example ${JSON.stringify(id)}; opened "${examples[0].title}" instead`;
+      notice = `unknown example "${id}"; opened "${examples[0].title}" instead`;
       entry = examples[0];
     }
     const token = ++loadToken;

@@ -47,7 +47,7 @@ describe('modeller page', { skip }, () => {
     return decodePng(png);
   };
   // The 3D view minus the panel (right), the title bar (top) and the status line (bottom).
-  const viewRect = (img) => ({ x0: 0, y0: 40, x1: img.width - 270, y1: img.height - 50 });
+  const viewRect = (img) => ({ x0: 0, y0: 40, x1: img.width - 340, y1: img.height - 50 });
 
   before(async () => {
     assert.ok(fs.existsSync(path.join(WASM_DIR, 'pdesurf.js')),
@@ -63,11 +63,19 @@ describe('modeller page', { skip }, () => {
     context = await chromium.launchPersistentContext(userDataDir, {
       executablePath: CHROMIUM, args: ARGS, headless: true, viewport: { width: 1280, height: 800 },
     });
-    page = context.pages()[0] || (await context.newPage());
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
-    page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+    page = await openPage(context.pages()[0]);
   });
+
+  // Fresh page with the problem listeners; a link test loads its URL in a new page
+  // rather than navigating, which would abort the old page's fetches.
+  async function openPage(existing) {
+    if (page && !existing) await page.close();
+    const p = existing || (await context.newPage());
+    p.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+    p.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+    p.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+    return p;
+  }
 
   after(async () => {
     await context?.close();
@@ -142,24 +150,31 @@ describe('modeller page', { skip }, () => {
     if (index.examples.length < 2) return t.skip('only one example');
     const second = index.examples[1].id;
     const before = await hooks();
-    await page.locator('#panel [data-control="example"] select').selectOption(second);
+    // lil-gui's <option>s carry labels only; pick by position in the catalogue.
+    await page.locator('#panel [data-control="example"] select').selectOption({ index: 1 });
     await page.waitForFunction((id) => window.__pdesurf.exampleId === id, second, { timeout: 20_000 });
     const now = await solvedAfter(before.solveCount);
     assert.equal(now.lastError, null);
     assert.equal(new URL(page.url()).hash, `#example=${encodeURIComponent(second)}`);
     await shoot('modeller-second.png');
 
+    // Editing the hash in place (history, hand-edited link) opens that example too.
+    const first = index.examples[0].id;
+    await page.evaluate((id) => { location.hash = 'example=' + encodeURIComponent(id); }, first);
+    await page.waitForFunction((id) => window.__pdesurf.exampleId === id, first, { timeout: 20_000 });
+    assert.equal((await solvedAfter(now.solveCount)).lastError, null);
+
     // A fresh load of the link opens the same example.
+    page = await openPage();
     await page.goto(`${base}/web/#example=${encodeURIComponent(second)}`);
-    await page.reload();
     await page.waitForFunction(() => window.__pdesurf.ready, null, { timeout: 30_000 });
     assert.equal((await hooks()).exampleId, second);
   });
 
   it('shows an unknown example id from a link as text, not markup', async () => {
     const evil = '<img src=x onerror="window.__pwned=1">';
+    page = await openPage();
     await page.goto(`${base}/web/#example=${encodeURIComponent(evil)}`);
-    await page.reload();
     await page.waitForFunction(() => window.__pdesurf.ready, null, { timeout: 30_000 });
     const text = await page.locator('#status').textContent();
     assert.ok(text.includes(evil), `status was: ${text}`);

@@ -69,16 +69,20 @@ function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
   return { patches: Array.from(res.patches || [], normalisePatch) };
 }
 
-// Copy into owned typed arrays of the documented types (views over the wasm heap
-// would go stale when it grows).
+// The binding already returns copies (slices of the wasm heap), so the arrays are
+// owned here; only check their types.
 function normalisePatch(p) {
+  const typed = (a, Type, what) => {
+    if (!(a instanceof Type)) throw new PdesurfError('Internal', `patch ${p.name}: ${what} is not a ${Type.name}`);
+    return a;
+  };
   const out = {
     name: String(p.name),
     kind: String(p.kind),
-    positions: new Float32Array(p.positions),
-    normals: new Float32Array(p.normals),
-    uvs: new Float32Array(p.uvs),
-    indices: new Uint32Array(p.indices),
+    positions: typed(p.positions, Float32Array, 'positions'),
+    normals: typed(p.normals, Float32Array, 'normals'),
+    uvs: typed(p.uvs, Float32Array, 'uvs'),
+    indices: typed(p.indices, Uint32Array, 'indices'),
   };
   if (p.operator) {
     const vec = (x) => (typeof x === 'number' ? [x, x, x] : Array.from(x, Number));

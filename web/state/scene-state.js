@@ -42,4 +42,3 @@ export function createSceneState() {
   return state;
 }
 
-export { AXES };

@@ -34,8 +34,10 @@ export function buildOperatorFolders(gui, solvedPatches, onChange) {
         const v = patch.operator[field][i];
         model[key] = v;
         const [min, max] = rangeFor(v);
+        // No explicit step: lil-gui then snaps slider drags to (max-min)/1000 but keeps a
+        // typed number exact, so small coefficients such as b = 0.001 stay reachable.
         const ctrl = folder
-          .add(model, key, min, max, (max - min) / 1000)
+          .add(model, key, min, max)
           .name(`${field} ${AXES[i]}`)
           .onChange((value) => onChange(patch.name, field, AXES[i], value));
         ctrl.domElement.dataset.operator = key;

@@ -13,7 +13,7 @@ const GRID_MAX = 256;
  * onExample(id), onGridChange(), onParameterChange(), onOperatorChange(patch, field, axis, value).
  */
 export function createPanel({ examples, grid, onExample, onGridChange, onParameterChange, onOperatorChange }) {
-  const gui = new GUI({ title: 'pdesurf' });
+  const gui = new GUI({ title: 'pdesurf', width: 320 });
   gui.domElement.id = 'panel';
 
   // Option labels are innerHTML'd by lil-gui: escape, and keep labels unique.

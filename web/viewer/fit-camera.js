@@ -4,7 +4,7 @@ import * as THREE from 'three';
 
 const VIEW_DIR = new THREE.Vector3(1.0, -1.35, 0.85).normalize(); // z is up
 
-export function fitCameraToObject(camera, controls, object, margin = 1.15) {
+export function fitCameraToObject(camera, controls, object, margin = 1.0) {
   const box = new THREE.Box3().setFromObject(object);
   if (box.isEmpty()) return;
   const sphere = box.getBoundingSphere(new THREE.Sphere());

@@ -19,9 +19,9 @@ export function createViewer(container) {
   camera.position.set(6, -8, 5);
 
   // Lights ride with the camera so the surface facing the user is always lit.
-  scene.add(new THREE.HemisphereLight(0xffffff, 0x404048, 1.4));
-  const key = new THREE.DirectionalLight(0xffffff, 1.6);
-  key.position.set(1, 1.5, 2);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x505058, 2.0));
+  const key = new THREE.DirectionalLight(0xffffff, 2.2);
+  key.position.set(0.6, 1.2, 2);
   camera.add(key);
   scene.add(camera);
 

@@ -1,0 +1,88 @@
+// Benchmark (not a test): median solve time per example, and tessellation throughput against
+// a memcpy of the same output bytes (the floor any tessellator must pay to write its output).
+// Built natively and as wasm for node; run both with scripts/bench.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "surface/mesh.hpp"
+
+using namespace pdesurf;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Median over 15 samples of the time per call, each sample batching enough calls to last ~2 ms.
+double medianSeconds(const std::function<void()>& f) {
+  int batch = 1;
+  for (;;) {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < batch; ++i) f();
+    if (std::chrono::duration<double>(Clock::now() - t0).count() > 2e-3 || batch > (1 << 24)) break;
+    batch *= 2;
+  }
+  std::vector<double> samples;
+  for (int s = 0; s < 15; ++s) {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < batch; ++i) f();
+    samples.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / batch);
+  }
+  std::nth_element(samples.begin(), samples.begin() + 7, samples.end());
+  return samples[7];
+}
+
+volatile size_t sink;
+
+}  // namespace
+
+int main() {
+#ifdef __EMSCRIPTEN__
+  const char* target = "wasm (node)";
+#else
+  const char* target = "native";
+#endif
+  const std::string dir = PDESURF_EXAMPLES_DIR;
+  const auto index = nlohmann::json::parse(readText(dir + "/index.json"));
+  std::printf("pdesurf benchmark, %s\n\n", target);
+  std::printf("%-16s %12s %14s\n", "example", "solve [us]", "parse+solve [us]");
+  for (const auto& e : index["examples"]) {
+    const std::string text = readText(dir + "/" + e["file"].get<std::string>());
+    const Scene scene = parseScene(text);
+    const double solve = medianSeconds([&] { sink = solveScene(scene).size(); });
+    const double both = medianSeconds([&] { sink = solveScene(parseScene(text)).size(); });
+    std::printf("%-16s %12.2f %14.2f\n", e["id"].get<std::string>().c_str(), solve * 1e6, both * 1e6);
+  }
+
+  const Scene scene = parseScene(readText(dir + "/you2004-fig4a.json"));
+  const SeparableSurface blend = solvePatch(*scene.firstPde());
+  std::printf("\ntessellation of you2004-fig4a's blend (positions, normals, uvs, indices)\n");
+  std::printf("%-10s %12s %14s %14s %10s\n", "grid", "time [ms]", "Mvertices/s", "memcpy [ms]", "x memcpy");
+  for (int n : {64, 256, 1024}) {
+    const Mesh probe = tessellate(blend, n, n);
+    const size_t bytes = (probe.positions.size() + probe.normals.size() + probe.uvs.size()) * sizeof(float) +
+                         probe.indices.size() * sizeof(uint32_t);
+    std::vector<char> src(bytes, 1), dst(bytes);
+    const double t = medianSeconds([&] { sink = tessellate(blend, n, n).vertexCount(); });
+    const double floor = medianSeconds([&] {
+      std::memcpy(dst.data(), src.data(), bytes);
+      sink = static_cast<size_t>(dst[bytes / 2]);
+    });
+    const double verts = static_cast<double>(probe.vertexCount());
+    std::printf("%4dx%-5d %12.3f %14.1f %14.3f %10.1f\n", n, n, t * 1e3, verts / t / 1e6, floor * 1e3, t / floor);
+  }
+  return 0;
+}

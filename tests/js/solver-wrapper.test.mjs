@@ -1,0 +1,67 @@
+// web/solver/pdesurf-solver.js against a stand-in module: the wrapper turns the
+// module's result-or-error value into data or a thrown PdesurfError.
+import { describe, it, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { loadSolver, PdesurfError } from '../../web/solver/pdesurf-solver.js';
+
+// A factory with the real module's shape: solveScene(text, nu, nv) -> {ok, ...}.
+const STUB = `
+export default async function createModule(opts) {
+  return {
+    gotBinary: !!opts.wasmBinary,
+    solveScene(text, nu, nv) {
+      const s = JSON.parse(text);
+      if (s.fail) return { ok: false, error: { code: s.fail, message: 'bad ' + s.fail } };
+      if (s.throwRaw) throw 12345;
+      const V = (nu + 1) * (nv + 1);
+      return { ok: true, patches: [{ name: 'blend', kind: 'pde',
+        operator: { order: 4, b: 2, c: [1, 2, 3], d: [1, 1, 1] },
+        positions: new Float32Array(3 * V).fill(1), normals: new Float32Array(3 * V), uvs: new Float32Array(2 * V),
+        indices: new Uint32Array(6 * nu * nv) }] };
+    },
+  };
+}`;
+
+describe('solver wrapper', () => {
+  let dir, solver;
+  before(async () => {
+    dir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-stub-'));
+    const file = path.join(dir, 'pdesurf.js');
+    fs.writeFileSync(file, STUB);
+    solver = await loadSolver({ moduleUrl: pathToFileURL(file).href, wasmBinary: new Uint8Array(8) });
+  });
+  after(() => fs.rmSync(dir, { recursive: true, force: true }));
+
+  it('passes wasmBinary to the factory', () => {
+    assert.equal(solver.module.gotBinary, true);
+  });
+
+  it('accepts a scene object or JSON text and returns typed arrays', () => {
+    for (const scene of [{ patches: [] }, '{"patches": []}']) {
+      const { patches } = solver.solve(scene, { nu: 2, nv: 3 });
+      assert.equal(patches.length, 1);
+      const p = patches[0];
+      assert.ok(p.positions instanceof Float32Array && p.positions.length === 3 * 12);
+      assert.ok(p.indices instanceof Uint32Array && p.indices.length === 36);
+      assert.deepEqual(p.operator, { order: 4, b: [2, 2, 2], c: [1, 2, 3], d: [1, 1, 1] });
+    }
+  });
+
+  it('throws PdesurfError with the code for an error result', () => {
+    assert.throws(() => solver.solve({ fail: 'DegenerateOperator' }), (e) =>
+      e instanceof PdesurfError && e instanceof Error && e.code === 'DegenerateOperator' && e.message === 'bad DegenerateOperator');
+  });
+
+  it('turns a raw throw into PdesurfError Internal', () => {
+    assert.throws(() => solver.solve({ throwRaw: true }), (e) => e instanceof PdesurfError && e.code === 'Internal');
+  });
+
+  it('reports a module that cannot be loaded', async () => {
+    await assert.rejects(loadSolver({ moduleUrl: pathToFileURL(path.join(dir, 'missing.js')).href }),
+      (e) => e instanceof PdesurfError && e.code === 'Load');
+  });
+});
