@@ -52,9 +52,15 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
     const auto solved = solveScene(scene);
+    // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
+    // buffers, uvs and indices are reused instead of rebuilt.
+    static std::vector<Mesh> meshes;
+    if (meshes.size() < solved.size()) meshes.resize(solved.size());
     val patches = val::array();
-    for (const SolvedPatch& sp : solved) {
-      const Mesh m = tessellate(sp.surface, nu, nv);
+    for (size_t k = 0; k < solved.size(); ++k) {
+      const SolvedPatch& sp = solved[k];
+      Mesh& m = meshes[k];
+      tessellateInto(sp.surface, nu, nv, m);
       val p = val::object();
       p.set("name", sp.patch->name);
       p.set("kind", std::string(patchKindName(sp.patch->kind)));

@@ -49,7 +49,27 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   return out;
 }
 
-void solveComponent(const ComponentProblem& p, std::vector<SeparableTerm>& terms) {
+// Bases for the two-point ODE, shared by every term (and component) with the same operator
+// coefficients and sigma: cos(wv) and sin(wv), or x and y with equal b, c, d, share one.
+class BasisCache {
+ public:
+  const EvenOdeBasis& get(const std::vector<double>& alpha, double sigma) {
+    for (const Entry& e : entries_)
+      if (e.sigma == sigma && e.alpha == alpha) return *e.basis;
+    entries_.push_back({alpha, sigma, std::make_unique<EvenOdeBasis>(alpha, sigma)});
+    return *entries_.back().basis;
+  }
+
+ private:
+  struct Entry {
+    std::vector<double> alpha;
+    double sigma;
+    std::unique_ptr<EvenOdeBasis> basis;
+  };
+  std::vector<Entry> entries_;
+};
+
+void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<SeparableTerm>& terms) {
   const int n = static_cast<int>(p.alpha.size()) - 1;
   if (n < 1) throw Error(ErrorCode::InvalidField, "the operator has no coefficients");
   if (static_cast<int>(p.left.size()) != n || static_cast<int>(p.right.size()) != n)
@@ -61,17 +81,11 @@ void solveComponent(const ComponentProblem& p, std::vector<SeparableTerm>& terms
     throw Error(ErrorCode::DegenerateOperator,
                 "the coefficient of the highest u-derivative (b) is 0: the PDE loses its order in u");
 
-  // Eigen-family terms: one ODE each; the basis is shared by terms with the same sigma.
-  std::vector<std::pair<double, std::shared_ptr<EvenOdeBasis>>> cache;
+  // Eigen-family terms: one ODE each.
   for (const Grouped& gr : groupEigenTerms(p, n)) {
     try {
-      const double sigma = gr.g.sigma();
-      auto it = std::find_if(cache.begin(), cache.end(), [&](const auto& e) { return e.first == sigma; });
-      if (it == cache.end()) {
-        cache.emplace_back(sigma, std::make_shared<EvenOdeBasis>(p.alpha, sigma));
-        it = cache.end() - 1;
-      }
-      terms.push_back({gr.g, it->second->solve(gr.values.data(), gr.values.data() + n)});
+      const EvenOdeBasis& basis = cache.get(p.alpha, gr.g.sigma());
+      terms.push_back({gr.g, basis.solve(gr.values.data(), gr.values.data() + n)});
     } catch (const Error& e) {
       throw Error(e.code(), "term " + describe(gr.g) + ": " + e.what());
     }
@@ -106,9 +120,10 @@ SeparableSurface solveClosedForm(const PdeProblem& problem) {
   SeparableSurface s;
   s.v0 = problem.v0;
   s.v1 = problem.v1;
+  BasisCache cache;
   for (int c = 0; c < 3; ++c) {
     try {
-      solveComponent(problem.component[c], s.component[c]);
+      solveComponent(problem.component[c], cache, s.component[c]);
     } catch (const Error& e) {
       throw Error(e.code(), std::string("component ") + kAxis[c] + ": " + e.what());
     }

@@ -26,6 +26,9 @@ struct GridSamples {
 };
 
 Mesh tessellate(const SeparableSurface& s, int nu, int nv);
+// The same into an existing mesh: its buffers are reused, and uvs and indices (which depend
+// only on the grid) are rebuilt only when the grid changes. For repeated solves (sliders).
+void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& out);
 GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv);
 
 }  // namespace pdesurf

@@ -24,7 +24,6 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
   for (int i = 0; i <= nu; ++i) t.u[i] = i == nu ? s.u1 : s.u0 + (s.u1 - s.u0) * i / nu;
   for (int j = 0; j <= nv; ++j) t.v[j] = j == nv ? s.v1 : s.v0 + (s.v1 - s.v0) * j / nv;
   static const char* axis[3] = {"x", "y", "z"};
-  std::vector<double> column(2 * (nu + 1));
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[c];
     const int T = static_cast<int>(terms.size());
@@ -32,11 +31,7 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
     t.uTab[c].assign(static_cast<size_t>(nu + 1) * 2 * T, 0.0);
     t.vTab[c].assign(static_cast<size_t>(nv + 1) * 2 * T, 0.0);
     for (int k = 0; k < T; ++k) {
-      terms[k].G.tabulate(t.u.data(), nu + 1, 1, column.data());
-      for (int i = 0; i <= nu; ++i) {
-        t.uTab[c][i * 2 * T + 2 * k] = column[i];
-        t.uTab[c][i * 2 * T + 2 * k + 1] = column[nu + 1 + i];
-      }
+      terms[k].G.tabulate(t.u.data(), nu + 1, 1, t.uTab[c].data() + static_cast<size_t>(2 * k) * (nu + 1));
       for (int j = 0; j <= nv; ++j) {
         t.vTab[c][j * 2 * T + 2 * k] = terms[k].g.eval(t.v[j], 0);
         t.vTab[c][j * 2 * T + 2 * k + 1] = terms[k].g.eval(t.v[j], 1);

@@ -12,7 +12,8 @@ namespace pdesurf {
 struct Tabulation {
   int nu = 0, nv = 0;
   std::vector<double> u, v;  // grid values, nu+1 and nv+1 entries
-  // Per component c: T_c terms. uTab[c][i * 2T + 2t + k] = G_t^{(k)}(u_i), k = 0, 1;
+  // Per component c: T_c terms. uTab[c][(2t + k) * (nu+1) + i] = G_t^{(k)}(u_i), k = 0, 1
+  // (rows along u, so combining a grid row is a contiguous, vectorisable loop);
   // vTab[c][j * 2T + 2t + k] = g_t^{(k)}(v_j).
   std::array<int, 3> terms{};
   std::array<std::vector<double>, 3> uTab, vTab;

@@ -75,3 +75,27 @@ TEST_CASE("examples: the tessellated mesh reproduces the boundary circle of Fig.
     CHECK(x1[2] == doctest::Approx(2.0).epsilon(1e-13));
   }
 }
+
+TEST_CASE("tessellation: a pole row (cone apex, X_v = 0) gets its neighbours' unit normals") {
+  auto j = nlohmann::json::parse(readText(examplePath("you2004-fig2a.json")));
+  j["parameters"]["r1"]["min"] = 0;
+  j["parameters"]["r1"]["value"] = 0;
+  const Scene scene = parseScene(j.dump());
+  const SeparableSurface s = solvePatch(*scene.firstPde());
+  Mesh m;
+  tessellateInto(s, 16, 24, m);
+  for (int row = 0; row <= 24; ++row) {
+    const float* apex = &m.normals[3 * (row * 17 + 16)];
+    const float* next = &m.normals[3 * (row * 17 + 15)];
+    CHECK(std::sqrt(apex[0] * apex[0] + apex[1] * apex[1] + apex[2] * apex[2]) == doctest::Approx(1.0f));
+    CHECK(apex[0] == next[0]);
+    CHECK(apex[2] == next[2]);
+  }
+  // Reusing the mesh at the same grid gives the same result as a fresh one.
+  tessellateInto(s, 16, 24, m);
+  const Mesh fresh = tessellate(s, 16, 24);
+  CHECK(m.positions == fresh.positions);
+  CHECK(m.normals == fresh.normals);
+  CHECK(m.indices == fresh.indices);
+  CHECK(m.uvs == fresh.uvs);
+}
