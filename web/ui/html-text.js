@@ -1,4 +1,4 @@
-// lil-gui writes controller names, folder titles and option labels with innerHTML.
+// lil-gui writes controller names, folder titles and option labels as HTML markup.
 // Every string we hand it passes through here, so text from a scene or a link is
 // shown literally and never parsed as markup.
 

@@ -16,7 +16,7 @@ export function createPanel({ examples, grid, onExample, onGridChange, onParamet
   const gui = new GUI({ title: 'pdesurf', width: 320 });
   gui.domElement.id = 'panel';
 
-  // Option labels are innerHTML'd by lil-gui: escape, and keep labels unique.
+  // lil-gui parses option labels as HTML: escape them, and keep labels unique.
   const options = {};
   for (const e of examples) {
     let label = escapeHtml(e.title);
