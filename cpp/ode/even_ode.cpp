@@ -70,8 +70,9 @@ std::vector<cplx> characteristicRoots(const std::vector<double>& alpha, double s
   return r;
 }
 
-EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
+EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma, int forceDegree) {
   n_ = static_cast<int>(alpha.size()) - 1;
+  extra_ = std::max(0, forceDegree + 1);
   if (n_ < 1) throw Error(ErrorCode::InvalidField, "operator needs at least two coefficients");
   for (double a : alpha)
     if (!std::isfinite(a)) throw Error(ErrorCode::NonFinite, "operator coefficient is not finite");
@@ -79,6 +80,8 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
     throw Error(ErrorCode::DegenerateOperator, "the coefficient of the highest u-derivative is 0: the PDE loses its order in u");
   if (!std::isfinite(sigma)) throw Error(ErrorCode::NonFinite, "frequency is not finite");
   roots_ = characteristicRoots(alpha, sigma);
+  const int ownRoots = static_cast<int>(roots_.size());
+  roots_.insert(roots_.end(), extra_, cplx(0.0));
 
   // Group roots closer than one unit (single linkage).
   const int m = static_cast<int>(roots_.size());
@@ -96,9 +99,12 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
   for (int g = 0; g < m; ++g) {
     if (find(g) != g) continue;
     std::vector<cplx> members;
-    for (int i = 0; i < m; ++i)
-      if (find(i) == g) members.push_back(roots_[i]);
     Cluster cl;
+    for (int i = 0; i < m; ++i)
+      if (find(i) == g) {
+        members.push_back(roots_[i]);
+        cl.augmented = cl.augmented || i >= ownRoots;
+      }
     cl.centre = std::accumulate(members.begin(), members.end(), cplx(0.0)) / static_cast<double>(members.size());
     cl.shift = cl.centre.real() > 0 ? 1.0 : 0.0;
     const int p = static_cast<int>(members.size());
@@ -127,8 +133,13 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
     clusters_.push_back(std::move(cl));
   }
 
-  // Boundary matrix: rows (end, derivative order), columns (cluster, basis function).
-  Eigen::MatrixXcd a(2 * n_, 2 * n_);
+  // Rows: the 2n boundary conditions (end, derivative order), then the extra_ force rows
+  // (L G)^{(i)}(0). Columns: (cluster, basis function). L annihilates every function of a
+  // cluster made only of L's own roots, so those entries are exactly 0, not roundoff.
+  std::vector<double> gamma(n_ + 1);  // gamma[m] multiplies the 2m-th derivative
+  for (int k = 0; k <= n_; ++k) gamma[n_ - k] = alpha[k] * std::pow(sigma, k);
+  const int size = 2 * n_ + extra_;
+  Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(size, size);
   int col = 0;
   for (const Cluster& cl : clusters_) {
     for (const auto& q : cl.basis) {
@@ -136,6 +147,16 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
         const double x = end - cl.shift;
         const cplx e = std::exp(cl.centre * x);
         for (int d = 0; d < n_; ++d) a(end * n_ + d, col) = e * evalPoly(derivativePoly(q, cl.centre, d), cplx(x));
+      }
+      if (cl.augmented) {
+        const double x = -cl.shift;
+        const cplx e = std::exp(cl.centre * x);
+        for (int i = 0; i < extra_; ++i) {
+          cplx sum = 0.0;
+          for (int mm = 0; mm <= n_; ++mm)
+            if (gamma[mm] != 0.0) sum += gamma[mm] * evalPoly(derivativePoly(q, cl.centre, 2 * mm + i), cplx(x));
+          a(2 * n_ + i, col) = e * sum;
+        }
       }
       ++col;
     }
@@ -154,11 +175,17 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma) {
                                          std::to_string(rcond) + ")");
 }
 
-UFactor EvenOdeBasis::solve(const double* left, const double* right) const {
-  Eigen::VectorXcd rhs(2 * n_);
+UFactor EvenOdeBasis::solve(const double* left, const double* right, const std::vector<double>& force) const {
+  if (static_cast<int>(force.size()) > extra_) throw Error(ErrorCode::Internal, "force degree above the basis's");
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(2 * n_ + extra_);
   for (int d = 0; d < n_; ++d) {
     rhs(d) = left[d];
     rhs(n_ + d) = right[d];
+  }
+  double factorial = 1.0;  // q^{(i)}(0) = i! q_i
+  for (size_t i = 0; i < force.size(); ++i) {
+    if (i > 0) factorial *= static_cast<double>(i);
+    rhs(2 * n_ + i) = factorial * force[i];
   }
   const Eigen::VectorXcd amp = colScale_.asDiagonal() * lu_.solve(rowScale_.asDiagonal() * rhs);
   UFactor f;

@@ -7,6 +7,12 @@
 // length of [0,1]) are grouped, and each group contributes the divided differences of
 // r -> e^{r u} over its roots, which tend to u^j e^{r u} as roots merge (repeated roots)
 // and stay well conditioned when they nearly merge.
+//
+// A force q(u) g(v) with q a polynomial of degree d is handled by the same mechanism rather
+// than by adding a polynomial particular solution (which blows up like 1/sigma^n for slowly
+// varying g and then cancels against the homogeneous part): G then solves the homogeneous
+// ODE D^{d+1} L G = 0, whose roots are those of L plus d+1 zeros, and the d+1 extra
+// conditions (L G)^{(i)}(0) = q^{(i)}(0), i <= d, make L G = q exactly.
 #pragma once
 #include <Eigen/Dense>
 #include <vector>
@@ -19,20 +25,24 @@ class EvenOdeBasis {
  public:
   // Throws Error(DegenerateOperator) when alpha[0] == 0 or a coefficient is not finite,
   // Error(Singular) when the two-point problem has no unique solution (resonance).
-  EvenOdeBasis(const std::vector<double>& alpha, double sigma);
+  // forceDegree: the degree of the force polynomials this basis will take (-1: no force).
+  EvenOdeBasis(const std::vector<double>& alpha, double sigma, int forceDegree = -1);
 
   int halfOrder() const { return n_; }
+  int forceDegree() const { return extra_ - 1; }
   const std::vector<cplx>& roots() const { return roots_; }
-  // left[i] = G^{(i)}(0), right[i] = G^{(i)}(1), i < n.
-  UFactor solve(const double* left, const double* right) const;
+  // left[i] = G^{(i)}(0), right[i] = G^{(i)}(1), i < n; force: ascending coefficients of q,
+  // at most forceDegree + 1 of them.
+  UFactor solve(const double* left, const double* right, const std::vector<double>& force = {}) const;
 
  private:
   struct Cluster {
     cplx centre;
     double shift;
     std::vector<std::vector<cplx>> basis;  // q_j, ascending powers of (u - shift)
+    bool augmented = false;                // holds some of the force's extra zero roots
   };
-  int n_ = 0;
+  int n_ = 0, extra_ = 0;
   std::vector<cplx> roots_;
   std::vector<Cluster> clusters_;
   Eigen::VectorXd rowScale_, colScale_;

@@ -25,26 +25,33 @@ std::string describe(const VFunction& g) {
   return s.str();
 }
 
-// Boundary values of one v-basis function: values[end * n + i] = coefficient in ∂^i X/∂u^i at u=end.
+// Everything attached to one v-basis function: its boundary values
+// (values[end * n + i] = coefficient in ∂^i X/∂u^i at u = end) and its force polynomial in u.
 struct Grouped {
   VFunction g;
   std::vector<double> values;
+  std::vector<double> force;
 };
 
 std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   std::vector<Grouped> out;
+  auto slot = [&](const VFunction& g) -> Grouped& {
+    auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == g; });
+    if (it != out.end()) return *it;
+    out.push_back({g, std::vector<double>(2 * n, 0.0), {}});
+    return out.back();
+  };
   for (int end = 0; end < 2; ++end) {
     const auto& side = end == 0 ? p.left : p.right;
     for (int i = 0; i < n; ++i)
-      for (const VTerm& t : side[i]) {
-        if (t.g.isPoly()) continue;
-        auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == t.g; });
-        if (it == out.end()) {
-          out.push_back({t.g, std::vector<double>(2 * n, 0.0)});
-          it = out.end() - 1;
-        }
-        it->values[end * n + i] += t.coef;
-      }
+      for (const VTerm& t : side[i])
+        if (!t.g.isPoly()) slot(t.g).values[end * n + i] += t.coef;
+  }
+  for (const ForceTerm& f : p.force) {
+    if (f.g.isPoly()) continue;
+    Grouped& gr = slot(f.g);
+    if (gr.force.size() < f.uPoly.size()) gr.force.resize(f.uPoly.size(), 0.0);
+    for (size_t k = 0; k < f.uPoly.size(); ++k) gr.force[k] += f.uPoly[k];
   }
   return out;
 }
@@ -53,10 +60,10 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
 // coefficients and sigma: cos(wv) and sin(wv), or x and y with equal b, c, d, share one.
 class BasisCache {
  public:
-  const EvenOdeBasis& get(const std::vector<double>& alpha, double sigma) {
+  const EvenOdeBasis& get(const std::vector<double>& alpha, double sigma, int forceDegree) {
     for (const Entry& e : entries_)
-      if (e.sigma == sigma && e.alpha == alpha) return *e.basis;
-    entries_.push_back({alpha, sigma, std::make_unique<EvenOdeBasis>(alpha, sigma)});
+      if (e.sigma == sigma && e.alpha == alpha && e.basis->forceDegree() == forceDegree) return *e.basis;
+    entries_.push_back({alpha, sigma, std::make_unique<EvenOdeBasis>(alpha, sigma, forceDegree)});
     return *entries_.back().basis;
   }
 
@@ -81,11 +88,12 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
     throw Error(ErrorCode::DegenerateOperator,
                 "the coefficient of the highest u-derivative (b) is 0: the PDE loses its order in u");
 
-  // Eigen-family terms: one ODE each.
-  for (const Grouped& gr : groupEigenTerms(p, n)) {
+  // Eigen-family terms: one ODE each (with its force, if any).
+  for (Grouped& gr : groupEigenTerms(p, n)) {
     try {
-      const EvenOdeBasis& basis = cache.get(p.alpha, gr.g.sigma());
-      terms.push_back({gr.g, basis.solve(gr.values.data(), gr.values.data() + n)});
+      while (!gr.force.empty() && gr.force.back() == 0.0) gr.force.pop_back();
+      const EvenOdeBasis& basis = cache.get(p.alpha, gr.g.sigma(), static_cast<int>(gr.force.size()) - 1);
+      terms.push_back({gr.g, basis.solve(gr.values.data(), gr.values.data() + n, gr.force)});
     } catch (const Error& e) {
       throw Error(e.code(), "term " + describe(gr.g) + ": " + e.what());
     }
@@ -97,6 +105,8 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
     for (const VExpansion& ex : end == 0 ? p.left : p.right)
       for (const VTerm& t : ex)
         if (t.g.isPoly()) top = std::max(top, t.g.n);
+  for (const ForceTerm& f : p.force)
+    if (f.g.isPoly()) top = std::max(top, f.g.n);
   if (top < 0) return;
   std::vector<std::vector<std::vector<double>>> data(top + 1, std::vector<std::vector<double>>(2, std::vector<double>(n, 0.0)));
   for (int end = 0; end < 2; ++end) {
@@ -105,7 +115,14 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
       for (const VTerm& t : side[i])
         if (t.g.isPoly()) data[t.g.n][end][i] += t.coef;
   }
-  const auto g = solvePolyInV(p.alpha, data);
+  std::vector<std::vector<double>> force(top + 1);
+  for (const ForceTerm& f : p.force) {
+    if (!f.g.isPoly()) continue;
+    auto& q = force[f.g.n];
+    if (q.size() < f.uPoly.size()) q.resize(f.uPoly.size(), 0.0);
+    for (size_t k = 0; k < f.uPoly.size(); ++k) q[k] += f.uPoly[k];
+  }
+  const auto g = solvePolyInV(p.alpha, data, force);
   for (int m = 0; m <= top; ++m) {
     VFunction f;
     f.family = Family::Poly;

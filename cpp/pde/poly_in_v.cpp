@@ -43,7 +43,8 @@ double fallingFactorial(int top, int count) {
 }  // namespace
 
 std::vector<std::vector<double>> solvePolyInV(const std::vector<double>& alpha,
-                                              const std::vector<std::vector<std::vector<double>>>& data) {
+                                              const std::vector<std::vector<std::vector<double>>>& data,
+                                              const std::vector<std::vector<double>>& force) {
   const int n = static_cast<int>(alpha.size()) - 1;
   const int top = static_cast<int>(data.size()) - 1;
   // Hermite matrix of the monomials u^0..u^{2n-1}: rows (end, derivative order).
@@ -60,6 +61,8 @@ std::vector<std::vector<double>> solvePolyInV(const std::vector<double>& alpha,
   std::vector<Poly> g(top + 1);
   for (int m = top; m >= 0; --m) {
     Poly rhs;
+    if (m < static_cast<int>(force.size()))
+      for (double c : force[m]) rhs.push_back(c / alpha[0]);
     for (int j = 1; j <= n && m + 2 * j <= top; ++j) {
       const Poly d = differentiate(g[m + 2 * j], 2 * n - 2 * j);
       const double factor = -alpha[j] * fallingFactorial(m + 2 * j, 2 * j) / alpha[0];

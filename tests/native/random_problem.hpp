@@ -22,6 +22,14 @@ inline std::vector<double> fourthOrderAlpha(Regime regime, std::mt19937& rng) {
   return {};
 }
 
+// Operator coefficients of order 2n with positive leading and trailing coefficients.
+inline std::vector<double> randomAlpha(int order, std::mt19937& rng) {
+  std::uniform_real_distribution<double> U(0.2, 3.0);
+  std::vector<double> a(order / 2 + 1);
+  for (double& x : a) x = U(rng);
+  return a;
+}
+
 inline VExpansion randomExpansion(std::mt19937& rng, int terms) {
   std::uniform_real_distribution<double> C(-2.0, 2.0);
   std::uniform_real_distribution<double> W(0.1, 4.0);
@@ -36,6 +44,18 @@ inline VExpansion randomExpansion(std::mt19937& rng, int terms) {
     e.push_back(t);
   }
   return e;
+}
+
+inline std::vector<ForceTerm> randomForce(std::mt19937& rng, int terms) {
+  std::uniform_real_distribution<double> C(-3.0, 3.0);
+  std::uniform_int_distribution<int> D(0, 3);
+  std::vector<ForceTerm> out;
+  for (const VTerm& t : randomExpansion(rng, terms)) {
+    ForceTerm f{t.g, {}};
+    for (int k = 0, deg = D(rng); k <= deg; ++k) f.uPoly.push_back(C(rng));
+    out.push_back(f);
+  }
+  return out;
 }
 
 inline PdeProblem randomProblem(const std::vector<double>& alpha, std::mt19937& rng, double v1 = 6.283185307179586) {

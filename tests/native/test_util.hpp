@@ -30,8 +30,10 @@ inline double expansionAt(const VExpansion& e, double v, double* scale = nullptr
 }
 
 // Largest boundary-condition error over components, ends, derivative orders and 41 v-samples,
-// relative to max(1, Σ|terms|).
-inline double boundaryError(const PdeProblem& p, const SeparableSurface& s) {
+// relative to max(1, Σ|terms|). With roots of size R the i-th u-derivative naturally carries a
+// factor R^i (and its rounding error too): derivativeScale = R measures derivatives in those
+// units.
+inline double boundaryError(const PdeProblem& p, const SeparableSurface& s, double derivativeScale = 1.0) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     const auto& cp = p.component[c];
@@ -43,13 +45,24 @@ inline double boundaryError(const PdeProblem& p, const SeparableSurface& s) {
           double scale = 0.0;
           const double want = expansionAt((end == 0 ? cp.left : cp.right)[i], v, &scale);
           const double got = evalComponent(s, c, end, v, i, 0);
-          worst = std::max(worst, std::abs(got - want) / std::max(1.0, scale));
+          worst = std::max(worst, std::abs(got - want) / std::max(1.0, scale) / std::pow(derivativeScale, i));
         }
   }
   return worst;
 }
 
-// |Σ_k alpha_k ∂u^{2(n-k)} ∂v^{2k} X| relative to Σ_k |each part|, at interior grid points.
+inline double forceAt(const std::vector<ForceTerm>& force, double u, double v) {
+  double f = 0.0;
+  for (const ForceTerm& t : force) {
+    double q = 0.0;
+    for (size_t k = t.uPoly.size(); k-- > 0;) q = q * u + t.uPoly[k];
+    f += q * t.g.eval(v);
+  }
+  return f;
+}
+
+// |Σ_k alpha_k ∂u^{2(n-k)} ∂v^{2k} X - f| relative to the sum of the sizes of its parts, at
+// interior grid points.
 inline double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
@@ -58,7 +71,8 @@ inline double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
     for (int iu = 1; iu < 10; ++iu)
       for (int iv = 0; iv <= 10; ++iv) {
         const double u = iu / 10.0, v = p.v0 + (p.v1 - p.v0) * iv / 10;
-        double sum = 0.0, mag = 0.0;
+        const double f = forceAt(p.component[c].force, u, v);
+        double sum = -f, mag = std::abs(f);
         for (int k = 0; k <= n; ++k) {
           const double part = a[k] * evalComponent(s, c, u, v, 2 * (n - k), 2 * k);
           sum += part;
