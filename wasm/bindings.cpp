@@ -22,18 +22,19 @@ val copyOut(const std::vector<T>& v) {
   return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
 }
 
-val numbers(const std::array<double, 3>& a) {
-  val out = val::array();
-  for (double x : a) out.call<void>("push", x);
-  return out;
-}
-
+// Per coordinate: {order, params: {name: value}} with the scene's own names (s, t / b, c, d /
+// a / coefficients[k]), so the page can show and edit them.
 val operatorOf(const Patch& p) {
   val op = val::object();
-  op.set("order", p.order);
-  const char* names[3] = {"b", "c", "d"};
-  for (int k = 0; k < 3; ++k)
-    op.set(names[k], numbers({p.pde.component[0].alpha[k], p.pde.component[1].alpha[k], p.pde.component[2].alpha[k]}));
+  const char* axis[3] = {"x", "y", "z"};
+  for (int c = 0; c < 3; ++c) {
+    val comp = val::object();
+    comp.set("order", p.op[c].order);
+    val params = val::object();
+    for (size_t k = 0; k < p.op[c].names.size(); ++k) params.set(p.op[c].names[k], p.op[c].values[k]);
+    comp.set("params", params);
+    op.set(axis[c], comp);
+  }
   return op;
 }
 
@@ -64,7 +65,14 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
       val p = val::object();
       p.set("name", sp.patch->name);
       p.set("kind", std::string(patchKindName(sp.patch->kind)));
-      if (sp.patch->kind == PatchKind::Pde) p.set("operator", operatorOf(*sp.patch));
+      if (sp.patch->kind == PatchKind::Pde) {
+        p.set("operator", operatorOf(*sp.patch));
+        p.set("method", std::string("closed"));
+        val methods = val::array();
+        methods.call<void>("push", std::string("auto"));
+        methods.call<void>("push", std::string("closed"));
+        p.set("methods", methods);
+      }
       p.set("positions", copyOut(m.positions));
       p.set("normals", copyOut(m.normals));
       p.set("uvs", copyOut(m.uvs));

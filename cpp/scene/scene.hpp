@@ -31,12 +31,20 @@ struct Meets {
   int end = 0;  // 0: u = 0, 1: u = 1
 };
 
+// The operator of one coordinate as the scene names it, resolved to numbers: order 2 {s, t},
+// order 4 {b, c, d}, order 6 {a} (= (∂²u + a²∂²v)³) or, for any order, coefficients[k].
+struct ComponentOperator {
+  int order = 4;
+  std::vector<std::string> names;
+  std::vector<double> values;
+};
+
 struct Patch {
   std::string name;
   Meets meets;          // Ruled only; meets.patch empty when not given
   PatchKind kind = PatchKind::Pde;
-  int order = 4;        // Pde only
-  PdeProblem pde;       // Pde only
+  std::array<ComponentOperator, 3> op;  // Pde only
+  PdeProblem pde;                       // Pde only
   RuledSurface ruled;   // Ruled only
 };
 

@@ -1,29 +1,22 @@
 // JSON -> Scene. Every error names its field path; unknown fields are rejected because they
 // are nearly always typos that would otherwise be silently ignored.
-#include <nlohmann/json.hpp>
-
 #include <cmath>
-#include <initializer_list>
 #include <set>
 
-#include "common/errors.hpp"
-#include "scene/expression.hpp"
+#include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
 
+using namespace scene_json;
+
+// In scene/pde_json.cpp.
+void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Patch& patch);
+
 namespace {
 
-using json = nlohmann::json;
 constexpr int kMaxJsonDepth = 32;
 constexpr int kMaxPatches = 64;
-constexpr int kMaxTerms = 256;
-constexpr int kMaxPower = 24;
-const char* kAxis[3] = {"x", "y", "z"};
-
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) {
-  throw Error(code, path + ": " + why);
-}
 
 // nlohmann's parser recurses per nesting level; bound the depth before it runs.
 void checkNesting(const std::string& text) {
@@ -43,111 +36,6 @@ void checkNesting(const std::string& text) {
     }
   }
 }
-
-void allowOnly(const json& obj, const std::string& path, std::initializer_list<const char*> keys) {
-  if (!obj.is_object()) fail(ErrorCode::InvalidField, path, "expected an object");
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool known = false;
-    for (const char* k : keys) known = known || it.key() == k;
-    if (!known) fail(ErrorCode::InvalidField, path + "." + it.key(), "unknown field");
-  }
-}
-
-const json& require(const json& obj, const char* key, const std::string& path) {
-  const auto it = obj.find(key);
-  if (it == obj.end()) fail(ErrorCode::InvalidField, path + "." + key, "missing");
-  return *it;
-}
-
-std::string stringField(const json& j, const std::string& path, size_t maxLen = 200) {
-  if (!j.is_string()) fail(ErrorCode::InvalidField, path, "expected a string");
-  const std::string s = j.get<std::string>();
-  if (s.size() > maxLen) fail(ErrorCode::InvalidField, path, "longer than " + std::to_string(maxLen) + " characters");
-  return s;
-}
-
-class Resolver {
- public:
-  ParameterValues values;
-
-  double number(const json& j, const std::string& path) const {
-    double v = 0;
-    if (j.is_number()) {
-      v = j.get<double>();
-    } else if (j.is_string()) {
-      try {
-        v = evaluateExpression(j.get<std::string>(), values);
-      } catch (const Error& e) {
-        fail(e.code(), path, e.what());
-      }
-    } else {
-      fail(ErrorCode::InvalidField, path, "expected a number or an expression string");
-    }
-    if (!std::isfinite(v)) fail(ErrorCode::NonFinite, path, "not a finite number");
-    return v;
-  }
-
-  std::array<double, 2> range(const json& obj, const char* key, const std::string& path, double a, double b) const {
-    const auto it = obj.find(key);
-    if (it == obj.end()) return {a, b};
-    const std::string p = path + "." + key;
-    if (!it->is_array() || it->size() != 2) fail(ErrorCode::InvalidField, p, "expected [start, end]");
-    const double lo = number((*it)[0], p + "[0]"), hi = number((*it)[1], p + "[1]");
-    if (!(hi > lo)) fail(ErrorCode::InvalidField, p, "end must be greater than start");
-    return {lo, hi};
-  }
-
-  VExpansion terms(const json& j, const std::string& path) const {
-    if (!j.is_array()) fail(ErrorCode::InvalidField, path, "expected an array of terms");
-    if (j.size() > kMaxTerms) fail(ErrorCode::InvalidField, path, "more than " + std::to_string(kMaxTerms) + " terms");
-    VExpansion out;
-    for (size_t k = 0; k < j.size(); ++k) {
-      const std::string p = path + "[" + std::to_string(k) + "]";
-      const json& t = j[k];
-      allowOnly(t, p, {"fn", "coef", "w", "n"});
-      VTerm term;
-      const std::string fn = stringField(require(t, "fn", p), p + ".fn");
-      if (!familyFromName(fn, &term.g.family))
-        fail(ErrorCode::UnknownName, p + ".fn", "unknown basis function '" + fn + "' (poly, cos, sin, exp, cosh, sinh)");
-      if (t.contains("coef")) term.coef = number(t["coef"], p + ".coef");
-      if (term.g.isPoly()) {
-        if (t.contains("w")) fail(ErrorCode::InvalidField, p + ".w", "a polynomial term has a power n, not a frequency w");
-        if (t.contains("n")) {
-          const json& n = t["n"];
-          if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > kMaxPower)
-            fail(ErrorCode::InvalidField, p + ".n", "expected an integer power 0.." + std::to_string(kMaxPower));
-          term.g.n = n.get<int>();
-        }
-      } else {
-        if (t.contains("n")) fail(ErrorCode::InvalidField, p + ".n", "only poly terms have a power n");
-        if (t.contains("w")) term.g.w = number(t["w"], p + ".w");
-      }
-      out.push_back(term);
-    }
-    return out;
-  }
-
-  std::array<VExpansion, 3> vectorTerms(const json& obj, const char* key, const std::string& path) const {
-    std::array<VExpansion, 3> out;
-    const auto it = obj.find(key);
-    if (it == obj.end()) return out;
-    const std::string p = path + "." + key;
-    allowOnly(*it, p, {"x", "y", "z"});
-    for (int c = 0; c < 3; ++c)
-      if (it->contains(kAxis[c])) out[c] = terms((*it)[kAxis[c]], p + "." + kAxis[c]);
-    return out;
-  }
-
-  // One number for x, y, z, or an array of three.
-  std::array<double, 3> perComponent(const json& j, const std::string& path) const {
-    if (j.is_array()) {
-      if (j.size() != 3) fail(ErrorCode::InvalidField, path, "expected one value or three (x, y, z)");
-      return {number(j[0], path + "[0]"), number(j[1], path + "[1]"), number(j[2], path + "[2]")};
-    }
-    const double v = number(j, path);
-    return {v, v, v};
-  }
-};
 
 void parseParameters(const json& j, Scene& scene, Resolver& r) {
   if (!j.is_object()) fail(ErrorCode::InvalidField, "parameters", "expected an object of named parameters");
@@ -179,51 +67,6 @@ void parseParameters(const json& j, Scene& scene, Resolver& r) {
     if (it.value().contains("label")) p.label = stringField(it.value()["label"], path + ".label");
     r.values[name] = p.value;
     scene.parameters.push_back(p);
-  }
-}
-
-void parsePde(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary"});
-  const auto vr = r.range(j, "v_range", path, 0.0, 2 * M_PI);
-  patch.pde.v0 = vr[0];
-  patch.pde.v1 = vr[1];
-  const std::string op = path + ".operator";
-  const json& o = require(j, "operator", path);
-  allowOnly(o, op, {"order", "b", "c", "d"});
-  const json& order = require(o, "order", op);
-  if (!order.is_number_integer() || order.get<long long>() != 4) fail(ErrorCode::InvalidField, op + ".order", "order must be 4");
-  patch.order = 4;
-  const auto b = r.perComponent(require(o, "b", op), op + ".b");
-  const auto c = r.perComponent(require(o, "c", op), op + ".c");
-  const auto d = r.perComponent(require(o, "d", op), op + ".d");
-  for (int k = 0; k < 3; ++k) {
-    if (b[k] == 0.0)
-      fail(ErrorCode::DegenerateOperator, op + ".b[" + std::to_string(k) + "]",
-           std::string("b_") + kAxis[k] + " = 0 removes the fourth u-derivative: the PDE loses its order");
-    patch.pde.component[k].alpha = {b[k], c[k], d[k]};
-  }
-  const int n = patch.order / 2;
-  const std::string bp = path + ".boundary";
-  const json& bnd = require(j, "boundary", path);
-  allowOnly(bnd, bp, {"x", "y", "z"});
-  for (int k = 0; k < 3; ++k) {
-    ComponentProblem& cp = patch.pde.component[k];
-    cp.left.assign(n, {});
-    cp.right.assign(n, {});
-    if (!bnd.contains(kAxis[k])) continue;
-    const std::string cpath = bp + "." + kAxis[k];
-    const json& comp = bnd[kAxis[k]];
-    allowOnly(comp, cpath, {"u0", "u1"});
-    for (int end = 0; end < 2; ++end) {
-      const char* key = end == 0 ? "u0" : "u1";
-      if (!comp.contains(key)) continue;
-      const json& list = comp[key];
-      const std::string lp = cpath + "." + key;
-      if (!list.is_array() || list.size() > static_cast<size_t>(n))
-        fail(ErrorCode::InvalidField, lp, "expected at most " + std::to_string(n) + " conditions [X, dX/du]");
-      for (size_t i = 0; i < list.size(); ++i)
-        (end == 0 ? cp.left : cp.right)[i] = r.terms(list[i], lp + "[" + std::to_string(i) + "]");
-    }
   }
 }
 
@@ -304,7 +147,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     const std::string kind = stringField(require(pj, "kind", path), path + ".kind");
     if (kind == "pde") {
       patch.kind = PatchKind::Pde;
-      parsePde(pj, path, r, patch);
+      parsePdePatch(pj, path, r, patch);
     } else if (kind == "ruled") {
       patch.kind = PatchKind::Ruled;
       parseRuled(pj, path, r, patch);

@@ -19,7 +19,7 @@ export default async function createModule(opts) {
       if (s.throwRaw) throw 12345;
       const V = (nu + 1) * (nv + 1);
       return { ok: true, patches: [{ name: 'blend', kind: 'pde',
-        operator: { order: 4, b: 2, c: [1, 2, 3], d: [1, 1, 1] },
+        operator: { x: { order: 4, params: { b: 2, c: 1, d: 1 } }, y: { order: 2, params: { s: 1, t: 0.5 } }, z: { order: 6, params: { a: 3 } } }, method: 'closed', methods: ['auto', 'closed'],
         positions: new Float32Array(3 * V).fill(1), normals: new Float32Array(3 * V), uvs: new Float32Array(2 * V),
         indices: new Uint32Array(6 * nu * nv) }] };
     },
@@ -47,7 +47,7 @@ describe('solver wrapper', () => {
       const p = patches[0];
       assert.ok(p.positions instanceof Float32Array && p.positions.length === 3 * 12);
       assert.ok(p.indices instanceof Uint32Array && p.indices.length === 36);
-      assert.deepEqual(p.operator, { order: 4, b: [2, 2, 2], c: [1, 2, 3], d: [1, 1, 1] });
+      assert.deepEqual(p.operator, { x: { order: 4, params: { b: 2, c: 1, d: 1 } }, y: { order: 2, params: { s: 1, t: 0.5 } }, z: { order: 6, params: { a: 3 } } });
     }
   });
 

@@ -80,7 +80,8 @@ TEST_CASE("forces: seed 004 Eq. 8, s x_uu + t x_vv = (p0 + p1 u) cos(a v)") {
   // (The paper prints -(p0 + p1 u)/t, which holds only for a = 1, and keeps c1, c2 unchanged,
   // which breaks the boundary conditions; here c1, c2 are re-fitted.)
   const double s = 5, t = 0.2, a = 2 * M_PI, r1 = 1.0, r3 = 0.6;
-  for (auto [p0, p1] : {std::pair{-1.0, 0.0}, {1.5, -4.0}, {-3.1, 5.0}}) {
+  for (const auto& force : {std::pair{-1.0, 0.0}, {1.5, -4.0}, {-3.1, 5.0}}) {
+    const double p0 = force.first, p1 = force.second;  // not a structured binding: clang 14 cannot capture those
     const double k = a * std::sqrt(t / s);
     auto part = [&](double u) { return -(p0 + p1 * u) / (t * a * a); };
     // c1 + c2 = r1 - part(0); c1 e^k + c2 e^-k = r3 - part(1)

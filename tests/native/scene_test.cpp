@@ -64,10 +64,10 @@ TEST_CASE("scene errors: fields") {
   CHECK(outcomeOf(j) == "UnknownName: patches[0].boundary.x.u0[0][0].fn: unknown basis function 'cosine' (poly, cos, sin, exp, cosh, sinh)");
   j = fig2a();
   j["patches"][0]["boundary"]["z"]["u1"] = json::array({json::array(), json::array(), json::array()});
-  CHECK(outcomeOf(j) == "InvalidField: patches[0].boundary.z.u1: expected at most 2 conditions [X, dX/du]");
+  CHECK(outcomeOf(j) == "InvalidField: patches[0].boundary.z.u1: an order-4 operator takes at most 2 conditions [X, dX/du]");
   j = fig2a();
   j["patches"][0]["operator"]["order"] = 3;
-  CHECK(outcomeOf(j) == "InvalidField: patches[0].operator.order: order must be 4");
+  CHECK(outcomeOf(j) == "InvalidField: patches[0].operator.order: order must be 2, 4 or 6");
   j = fig2a();
   j["patches"][1]["name"] = "blend";
   CHECK(outcomeOf(j) == "InvalidField: patches[1].name: duplicate patch name 'blend'");
@@ -85,7 +85,7 @@ TEST_CASE("scene errors: non-finite and degenerate numbers") {
   CHECK(outcomeOf(j) == "NonFinite: patches[0].operator.c: col 1: exp(1000.000000) is not finite");
   j = fig2a();
   j["patches"][0]["operator"]["b"] = json::array({1, 0, 1});
-  CHECK(outcomeOf(j) == "DegenerateOperator: patches[0].operator.b[1]: b_y = 0 removes the fourth u-derivative: the PDE loses its order");
+  CHECK(outcomeOf(j) == "DegenerateOperator: patches[0].operator.b[1]: b_y = 0 removes the 4th u-derivative: the PDE loses its order");
   j = fig2a();
   j["patches"][0]["boundary"]["x"]["u0"][0].push_back({{"fn", "exp"}, {"w", 200}});
   CHECK(outcomeOf(j) == "NonFinite: component x: a v-basis function overflows on the v-range");

@@ -85,8 +85,16 @@ function normalisePatch(p) {
     indices: typed(p.indices, Uint32Array, 'indices'),
   };
   if (p.operator) {
-    const vec = (x) => (typeof x === 'number' ? [x, x, x] : Array.from(x, Number));
-    out.operator = { order: Number(p.operator.order), b: vec(p.operator.b), c: vec(p.operator.c), d: vec(p.operator.d) };
+    // Per coordinate: { order, params: { name: value } } with the scene's own names.
+    out.operator = {};
+    for (const axis of ['x', 'y', 'z']) {
+      const c = p.operator[axis];
+      const params = {};
+      for (const [k, v] of Object.entries(c.params)) params[k] = Number(v);
+      out.operator[axis] = { order: Number(c.order), params };
+    }
+    out.method = String(p.method);
+    out.methods = Array.from(p.methods || [], String);
   }
   return out;
 }

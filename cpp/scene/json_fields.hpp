@@ -1,0 +1,131 @@
+// Shared by the scene parsers: field-path errors, strict objects, and the resolver that turns
+// numbers-or-expressions and term lists into values.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <initializer_list>
+#include <string>
+
+#include "common/errors.hpp"
+#include "pde/pde_problem.hpp"
+#include "scene/expression.hpp"
+
+namespace pdesurf::scene_json {
+
+using json = nlohmann::json;
+constexpr int kMaxTerms = 256;
+constexpr int kMaxPower = 24;
+inline const char* const kAxis[3] = {"x", "y", "z"};
+
+[[noreturn]] inline void fail(ErrorCode code, const std::string& path, const std::string& why) {
+  throw Error(code, path + ": " + why);
+}
+
+inline void allowOnly(const json& obj, const std::string& path, std::initializer_list<const char*> keys) {
+  if (!obj.is_object()) fail(ErrorCode::InvalidField, path, "expected an object");
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool known = false;
+    for (const char* k : keys) known = known || it.key() == k;
+    if (!known) fail(ErrorCode::InvalidField, path + "." + it.key(), "unknown field");
+  }
+}
+
+inline const json& require(const json& obj, const char* key, const std::string& path) {
+  const auto it = obj.find(key);
+  if (it == obj.end()) fail(ErrorCode::InvalidField, path + "." + key, "missing");
+  return *it;
+}
+
+inline std::string stringField(const json& j, const std::string& path, size_t maxLen = 200) {
+  if (!j.is_string()) fail(ErrorCode::InvalidField, path, "expected a string");
+  const std::string s = j.get<std::string>();
+  if (s.size() > maxLen) fail(ErrorCode::InvalidField, path, "longer than " + std::to_string(maxLen) + " characters");
+  return s;
+}
+
+class Resolver {
+ public:
+  ParameterValues values;
+
+  double number(const json& j, const std::string& path) const {
+    double v = 0;
+    if (j.is_number()) {
+      v = j.get<double>();
+    } else if (j.is_string()) {
+      try {
+        v = evaluateExpression(j.get<std::string>(), values);
+      } catch (const Error& e) {
+        fail(e.code(), path, e.what());
+      }
+    } else {
+      fail(ErrorCode::InvalidField, path, "expected a number or an expression string");
+    }
+    if (!std::isfinite(v)) fail(ErrorCode::NonFinite, path, "not a finite number");
+    return v;
+  }
+
+  std::array<double, 2> range(const json& obj, const char* key, const std::string& path, double a, double b) const {
+    const auto it = obj.find(key);
+    if (it == obj.end()) return {a, b};
+    const std::string p = path + "." + key;
+    if (!it->is_array() || it->size() != 2) fail(ErrorCode::InvalidField, p, "expected [start, end]");
+    const double lo = number((*it)[0], p + "[0]"), hi = number((*it)[1], p + "[1]");
+    if (!(hi > lo)) fail(ErrorCode::InvalidField, p, "end must be greater than start");
+    return {lo, hi};
+  }
+
+  VExpansion terms(const json& j, const std::string& path) const {
+    if (!j.is_array()) fail(ErrorCode::InvalidField, path, "expected an array of terms");
+    if (j.size() > kMaxTerms) fail(ErrorCode::InvalidField, path, "more than " + std::to_string(kMaxTerms) + " terms");
+    VExpansion out;
+    for (size_t k = 0; k < j.size(); ++k) {
+      const std::string p = path + "[" + std::to_string(k) + "]";
+      const json& t = j[k];
+      allowOnly(t, p, {"fn", "coef", "w", "n"});
+      VTerm term;
+      const std::string fn = stringField(require(t, "fn", p), p + ".fn");
+      if (!familyFromName(fn, &term.g.family))
+        fail(ErrorCode::UnknownName, p + ".fn", "unknown basis function '" + fn + "' (poly, cos, sin, exp, cosh, sinh)");
+      if (t.contains("coef")) term.coef = number(t["coef"], p + ".coef");
+      if (term.g.isPoly()) {
+        if (t.contains("w")) fail(ErrorCode::InvalidField, p + ".w", "a polynomial term has a power n, not a frequency w");
+        if (t.contains("n")) {
+          const json& n = t["n"];
+          if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > kMaxPower)
+            fail(ErrorCode::InvalidField, p + ".n", "expected an integer power 0.." + std::to_string(kMaxPower));
+          term.g.n = n.get<int>();
+        }
+      } else {
+        if (t.contains("n")) fail(ErrorCode::InvalidField, p + ".n", "only poly terms have a power n");
+        if (t.contains("w")) term.g.w = number(t["w"], p + ".w");
+      }
+      out.push_back(term);
+    }
+    return out;
+  }
+
+  std::array<VExpansion, 3> vectorTerms(const json& obj, const char* key, const std::string& path) const {
+    std::array<VExpansion, 3> out;
+    const auto it = obj.find(key);
+    if (it == obj.end()) return out;
+    const std::string p = path + "." + key;
+    allowOnly(*it, p, {"x", "y", "z"});
+    for (int c = 0; c < 3; ++c)
+      if (it->contains(kAxis[c])) out[c] = terms((*it)[kAxis[c]], p + "." + kAxis[c]);
+    return out;
+  }
+
+  // One number for x, y, z, or an array of three.
+  std::array<double, 3> perComponent(const json& j, const std::string& path) const {
+    if (j.is_array()) {
+      if (j.size() != 3) fail(ErrorCode::InvalidField, path, "expected one value or three (x, y, z)");
+      return {number(j[0], path + "[0]"), number(j[1], path + "[1]"), number(j[2], path + "[2]")};
+    }
+    const double v = number(j, path);
+    return {v, v, v};
+  }
+};
+
+}  // namespace pdesurf::scene_json
