@@ -64,7 +64,7 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
       tessellateInto(sp.surface, nu, nv, m);
       val p = val::object();
       p.set("name", sp.patch->name);
-      p.set("kind", std::string(patchKindName(sp.patch->kind)));
+      p.set("kind", sp.patch->kindName);
       if (sp.patch->kind == PatchKind::Pde) {
         p.set("operator", operatorOf(*sp.patch));
         p.set("method", std::string("closed"));

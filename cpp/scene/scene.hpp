@@ -15,20 +15,28 @@ struct Parameter {
   double value = 0, min = 0, max = 0;
 };
 
-enum class PatchKind { Pde, Ruled };
-const char* patchKindName(PatchKind kind);
+enum class PatchKind { Pde, Primary };
 
-// P(t, v) = C(v) + t·D(v), t in [t0, t1]: cylinders, cones and planes through a trimline.
-struct RuledSurface {
-  double t0 = 0, t1 = 1, v0 = 0, v1 = 0;
-  std::array<VExpansion, 3> curve, direction;
+// coef · T(t) · g(v): one term of a primary surface; T and g are basis functions.
+struct PrimaryTerm {
+  VFunction t, v;
+  double coef = 1.0;
 };
 
-// Where a primary surface meets a PDE patch: its t = t0 curve is that patch's boundary at
-// u = end. Used to check (and later report) continuity along the trimline.
+// A primary surface, separable in (t, v): each coordinate Σ coef T(t) g(v), t in [t0, t1].
+// "ruled" scenes (C(v) + t D(v): cylinders, cones, planes) and "separable" scenes (spheres
+// R sin t cos v, ellipsoids, hyperboloids a cosh t cos v, explicit surfaces) both become one.
+struct PrimarySurface {
+  double t0 = 0, t1 = 1, v0 = 0, v1 = 0;
+  std::array<std::vector<PrimaryTerm>, 3> terms;
+};
+
+// Where a primary surface meets a PDE patch: its t = t0 (or t1) curve is that patch's
+// boundary at u = end. Used to check (and later report) continuity along the trimline.
 struct Meets {
   std::string patch;
-  int end = 0;  // 0: u = 0, 1: u = 1
+  int end = 0;         // 0: u = 0, 1: u = 1
+  bool atT1 = false;   // the primary's edge: false t = t0, true t = t1
 };
 
 // The operator of one coordinate as the scene names it, resolved to numbers: order 2 {s, t},
@@ -41,11 +49,12 @@ struct ComponentOperator {
 
 struct Patch {
   std::string name;
-  Meets meets;          // Ruled only; meets.patch empty when not given
+  std::string kindName;  // as the scene says: "pde", "ruled", "separable"
+  Meets meets;          // Primary only; meets.patch empty when not given
   PatchKind kind = PatchKind::Pde;
   std::array<ComponentOperator, 3> op;  // Pde only
   PdeProblem pde;                       // Pde only
-  RuledSurface ruled;   // Ruled only
+  PrimarySurface primary;  // Primary only
 };
 
 struct Scene {

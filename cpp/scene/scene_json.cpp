@@ -70,26 +70,69 @@ void parseParameters(const json& j, Scene& scene, Resolver& r) {
   }
 }
 
-void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "curve", "direction", "meets"});
-  if (j.contains("meets")) {
-    const std::string mp = path + ".meets";
-    allowOnly(j["meets"], mp, {"patch", "end"});
-    patch.meets.patch = stringField(require(j["meets"], "patch", mp), mp + ".patch", 64);
-    const std::string end = stringField(require(j["meets"], "end", mp), mp + ".end");
-    if (end != "u0" && end != "u1") fail(ErrorCode::InvalidField, mp + ".end", "expected \"u0\" or \"u1\"");
-    patch.meets.end = end == "u0" ? 0 : 1;
+void parseMeets(const json& j, const std::string& path, Patch& patch) {
+  if (!j.contains("meets")) return;
+  const std::string mp = path + ".meets";
+  allowOnly(j["meets"], mp, {"patch", "end", "at"});
+  patch.meets.patch = stringField(require(j["meets"], "patch", mp), mp + ".patch", 64);
+  const std::string end = stringField(require(j["meets"], "end", mp), mp + ".end");
+  if (end != "u0" && end != "u1") fail(ErrorCode::InvalidField, mp + ".end", "expected \"u0\" or \"u1\"");
+  patch.meets.end = end == "u0" ? 0 : 1;
+  if (j["meets"].contains("at")) {
+    const std::string at = stringField(j["meets"]["at"], mp + ".at");
+    if (at != "t0" && at != "t1") fail(ErrorCode::InvalidField, mp + ".at", "expected \"t0\" or \"t1\"");
+    patch.meets.atT1 = at == "t1";
   }
+}
+
+void primaryRanges(const json& j, const std::string& path, const Resolver& r, PrimarySurface& s) {
   const auto vr = r.range(j, "v_range", path, 0.0, 2 * M_PI);
   const auto tr = r.range(j, "t_range", path, 0.0, 1.0);
-  patch.ruled.v0 = vr[0];
-  patch.ruled.v1 = vr[1];
-  patch.ruled.t0 = tr[0];
-  patch.ruled.t1 = tr[1];
+  s.v0 = vr[0], s.v1 = vr[1], s.t0 = tr[0], s.t1 = tr[1];
+}
+
+// "ruled": C(v) + t D(v).
+void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "curve", "direction", "meets"});
+  parseMeets(j, path, patch);
+  primaryRanges(j, path, r, patch.primary);
   require(j, "curve", path);
   require(j, "direction", path);
-  patch.ruled.curve = r.vectorTerms(j, "curve", path);
-  patch.ruled.direction = r.vectorTerms(j, "direction", path);
+  const auto curve = r.vectorTerms(j, "curve", path);
+  const auto direction = r.vectorTerms(j, "direction", path);
+  for (int c = 0; c < 3; ++c) {
+    for (const VTerm& t : curve[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 0}, t.g, t.coef});
+    for (const VTerm& t : direction[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 1}, t.g, t.coef});
+  }
+}
+
+// "separable": per coordinate, terms with an optional factor "t": {fn, w, n} of t.
+void parseSeparable(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
+  parseMeets(j, path, patch);
+  primaryRanges(j, path, r, patch.primary);
+  for (int c = 0; c < 3; ++c) {
+    if (!j.contains(kAxis[c])) continue;
+    const std::string cp = path + "." + kAxis[c];
+    const json& list = j[kAxis[c]];
+    if (!list.is_array()) fail(ErrorCode::InvalidField, cp, "expected an array of terms");
+    for (size_t k = 0; k < list.size(); ++k) {
+      const std::string tp = cp + "[" + std::to_string(k) + "]";
+      if (!list[k].is_object()) fail(ErrorCode::InvalidField, tp, "expected an object");
+      json vpart = list[k];
+      VFunction tf{Family::Poly, 1.0, 0};
+      if (vpart.contains("t")) {
+        const json tj = vpart["t"];
+        allowOnly(tj, tp + ".t", {"fn", "w", "n"});
+        json as = tj;
+        as["coef"] = 1;
+        tf = r.terms(json::array({as}), tp + ".t").front().g;
+        vpart.erase("t");
+      }
+      const VTerm vt = r.terms(json::array({vpart}), cp).front();
+      patch.primary.terms[c].push_back({tf, vt.g, vt.coef});
+    }
+  }
 }
 
 }  // namespace
@@ -145,14 +188,18 @@ static Scene parseSceneUnchecked(const std::string& text) {
     if (patch.name.empty()) fail(ErrorCode::InvalidField, path + ".name", "empty");
     if (!names.insert(patch.name).second) fail(ErrorCode::InvalidField, path + ".name", "duplicate patch name '" + patch.name + "'");
     const std::string kind = stringField(require(pj, "kind", path), path + ".kind");
+    patch.kindName = kind;
     if (kind == "pde") {
       patch.kind = PatchKind::Pde;
       parsePdePatch(pj, path, r, patch);
     } else if (kind == "ruled") {
-      patch.kind = PatchKind::Ruled;
+      patch.kind = PatchKind::Primary;
       parseRuled(pj, path, r, patch);
+    } else if (kind == "separable") {
+      patch.kind = PatchKind::Primary;
+      parseSeparable(pj, path, r, patch);
     } else {
-      fail(ErrorCode::InvalidField, path + ".kind", "unknown kind '" + kind + "' (pde, ruled)");
+      fail(ErrorCode::InvalidField, path + ".kind", "unknown kind '" + kind + "' (pde, ruled, separable)");
     }
     scene.patches.push_back(std::move(patch));
   }

@@ -6,8 +6,6 @@
 
 namespace pdesurf {
 
-const char* patchKindName(PatchKind kind) { return kind == PatchKind::Pde ? "pde" : "ruled"; }
-
 const Patch* Scene::find(const std::string& name) const {
   for (const Patch& p : patches)
     if (p.name == name) return &p;
@@ -22,17 +20,40 @@ const Patch* Scene::firstPde() const {
 
 namespace {
 
-// A ruled surface is separable too: C-terms carry the u-factor 1, D-terms the u-factor t.
-SeparableSurface ruledToSeparable(const RuledSurface& r) {
-  SeparableSurface s;
-  s.u0 = r.t0;
-  s.u1 = r.t1;
-  s.v0 = r.v0;
-  s.v1 = r.v1;
-  for (int c = 0; c < 3; ++c) {
-    for (const VTerm& t : r.curve[c]) s.component[c].push_back({t.g, UFactor::polynomial({t.coef})});
-    for (const VTerm& t : r.direction[c]) s.component[c].push_back({t.g, UFactor::polynomial({0.0, t.coef})});
+// T(t) as a u-factor: cos and sin are the real parts of complex exponentials, cosh and sinh
+// sums of two real ones.
+UFactor tFactor(const VFunction& f, double coef) {
+  UFactor out;
+  auto piece = [&](cplx rate, cplx c) {
+    ExpPoly p;
+    p.rate = rate;
+    p.poly = {c};
+    out.pieces.push_back(p);
+  };
+  const double w = f.w;
+  switch (f.family) {
+    case Family::Poly: {
+      std::vector<double> poly(f.n + 1, 0.0);
+      poly[f.n] = coef;
+      return UFactor::polynomial(poly);
+    }
+    case Family::Cos: piece(cplx(0, w), coef); break;
+    case Family::Sin: piece(cplx(0, w), cplx(0, -coef)); break;
+    case Family::Exp: piece(w, coef); break;
+    case Family::Cosh: piece(w, coef / 2), piece(-w, coef / 2); break;
+    case Family::Sinh: piece(w, coef / 2), piece(-w, -coef / 2); break;
   }
+  return out;
+}
+
+SeparableSurface primaryToSeparable(const PrimarySurface& p) {
+  SeparableSurface s;
+  s.u0 = p.t0;
+  s.u1 = p.t1;
+  s.v0 = p.v0;
+  s.v1 = p.v1;
+  for (int c = 0; c < 3; ++c)
+    for (const PrimaryTerm& t : p.terms[c]) s.component[c].push_back({t.v, tFactor(t.t, t.coef)});
   return s;
 }
 
@@ -40,7 +61,7 @@ SeparableSurface ruledToSeparable(const RuledSurface& r) {
 
 SeparableSurface solvePatch(const Patch& patch) {
   try {
-    if (patch.kind == PatchKind::Ruled) return ruledToSeparable(patch.ruled);
+    if (patch.kind == PatchKind::Primary) return primaryToSeparable(patch.primary);
     return solveClosedForm(patch.pde);
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());

@@ -20,7 +20,7 @@ test('every example solves with the ParametricGeometry layout', () => {
   for (const { id, file } of index.examples) {
     const nu = 12, nv = 20, V = (nu + 1) * (nv + 1);
     const { patches } = solver.solve(sceneText(file), { nu, nv });
-    assert.ok(patches.length >= 2, id);
+    assert.ok(patches.length >= 1, id);
     assert.equal(patches.filter((p) => p.kind === 'pde').length, 1, id);
     for (const p of patches) {
       assert.equal(p.positions.length, 3 * V);

@@ -15,8 +15,13 @@ using namespace pdesurf::testing;
 
 namespace {
 
+// Unit normal; where X_u vanishes (a blend that leaves its trimline with zero speed, seed 003
+// Eq. 14) the limit along u is X_uu × X_v.
 Eigen::Vector3d unitNormal(const SeparableSurface& s, double u, double v) {
-  return evalPoint(s, u, v, 1, 0).cross(evalPoint(s, u, v, 0, 1)).normalized();
+  Eigen::Vector3d xu = evalPoint(s, u, v, 1, 0);
+  const Eigen::Vector3d xv = evalPoint(s, u, v, 0, 1);
+  if (xu.norm() < 1e-12 * xv.norm()) xu = evalPoint(s, u, v, 2, 0);
+  return xu.cross(xv).normalized();
 }
 
 }  // namespace
@@ -44,20 +49,34 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
         REQUIRE(std::isfinite(m.positions[3 * k]));
         REQUIRE(std::abs(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1.0f) < 1e-5f);
       }
-      if (sp.patch->kind != PatchKind::Ruled || sp.patch->meets.patch.empty()) continue;
+      if (sp.patch->kind != PatchKind::Primary || sp.patch->meets.patch.empty()) continue;
       // The primary surface's t0 edge is the blend's boundary (G0) with the same tangent plane (G1).
       const auto blend = std::find_if(solved.begin(), solved.end(), [&](const SolvedPatch& o) { return o.patch->name == sp.patch->meets.patch; });
       REQUIRE(blend != solved.end());
       const double end = sp.patch->meets.end;
+      const double edge = sp.patch->meets.atT1 ? sp.surface.u1 : sp.surface.u0;
       double gap = 0, angle = 0;
       for (int k = 0; k <= 64; ++k) {
         const double v = sp.surface.v0 + (sp.surface.v1 - sp.surface.v0) * k / 64;
-        gap = std::max(gap, (evalPoint(sp.surface, sp.surface.u0, v) - evalPoint(blend->surface, end, v)).norm());
-        const double c = std::abs(unitNormal(sp.surface, sp.surface.u0, v).dot(unitNormal(blend->surface, end, v)));
+        gap = std::max(gap, (evalPoint(sp.surface, edge, v) - evalPoint(blend->surface, end, v)).norm());
+        // Where the trimline's own parametrisation stops (x = sin v at v = pi/2: X_v = 0) no
+        // normal exists; G0 is still checked there.
+        if (evalPoint(blend->surface, end, v, 0, 1).norm() < 1e-9) continue;
+        const double c = std::abs(unitNormal(sp.surface, edge, v).dot(unitNormal(blend->surface, end, v)));
         angle = std::max(angle, std::acos(std::min(1.0, c)));
       }
       CHECK(gap < 1e-12);
       CHECK(angle < 1e-7);  // radians
+      // Sixth-order blends also take the primary's second derivative (seed 003's C²).
+      const auto& ops = blend->patch->op;
+      if (ops[0].order == 6 && ops[1].order == 6 && ops[2].order == 6) {
+        double jump = 0;
+        for (int k = 0; k <= 64; ++k) {
+          const double v = sp.surface.v0 + (sp.surface.v1 - sp.surface.v0) * k / 64;
+          jump = std::max(jump, (evalPoint(sp.surface, edge, v, 2, 0) - evalPoint(blend->surface, end, v, 2, 0)).norm());
+        }
+        CHECK(jump < 1e-9);
+      }
     }
   }
 }
