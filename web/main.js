@@ -54,9 +54,21 @@ async function start() {
     onExample: (id) => openExample(id),
     onGridChange: () => scheduler.request(),
     onParameterChange: () => scheduler.request(),
-    onOperatorChange: (patch, field, axis, value) => {
-      state.setOperatorComponent(patch, field, axis, value);
-      scheduler.request();
+    operatorHandlers: {
+      methodOf: (patch) => state.methodOf(patch),
+      onParam: (patch, axis, name, value) => {
+        state.setOperatorParam(patch, axis, name, value);
+        scheduler.request();
+      },
+      onOrder: (patch, axis, order) => {
+        const params = state.setOperatorOrder(patch, axis, order);
+        if (params) scheduler.request();
+        return params;
+      },
+      onMethod: (patch, method) => {
+        state.setMethod(patch, method);
+        scheduler.request();
+      },
     },
   });
 

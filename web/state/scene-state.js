@@ -1,9 +1,11 @@
-// The scene object in memory is the page state: sliders write into it, and
+// The scene object in memory is the page state: controls write into it, and
 // JSON.stringify(scene) is exactly what the solver sees.
-
-const AXES = ['x', 'y', 'z'];
+import { withParam, withOrder, orderOf, defaultParams } from './operator-edit.js';
+import { createBoundaryStash } from './boundary-stash.js';
 
 export function createSceneState() {
+  const stash = createBoundaryStash(); // derivative conditions dropped by order changes
+
   const state = {
     scene: null,
     exampleId: null,
@@ -13,6 +15,7 @@ export function createSceneState() {
     setScene(scene, exampleId) {
       state.scene = scene;
       state.exampleId = exampleId;
+      stash.clear();
     },
 
     /** The pde patches of the scene, in scene order. */
@@ -20,18 +23,46 @@ export function createSceneState() {
       return (state.scene?.patches || []).filter((p) => p && p.kind === 'pde');
     },
 
+    /** The pde patch named `name`; throws if there is none. */
+    pdePatch(name) {
+      const patch = state.pdePatches().find((p) => p.name === name);
+      if (!patch) throw new Error(`no pde patch named ${JSON.stringify(name)}`);
+      return patch;
+    },
+
     /**
-     * Set one component of operator field b|c|d of a pde patch. A scalar (one value
-     * for x, y and z) becomes a 3-array so the other two components keep their value.
+     * Set one coefficient (b, s, a, coefficients[k], ...) of one coordinate. The operator
+     * becomes per coordinate; the other coordinates keep their scene values.
      */
-    setOperatorComponent(patchName, field, axis, value) {
+    setOperatorParam(patchName, axis, name, value) {
+      const patch = state.pdePatch(patchName);
+      patch.operator = withParam(patch.operator, axis, name, value);
+    },
+
+    /**
+     * Give one coordinate an operator of another order (default coefficients) and fit
+     * its boundary lists to order/2 conditions. Returns the coordinate's new
+     * coefficients; the same order again changes nothing (and returns null).
+     */
+    setOperatorOrder(patchName, axis, order) {
+      const patch = state.pdePatch(patchName);
+      if (orderOf(patch.operator, axis) === order) return null;
+      patch.operator = withOrder(patch.operator, axis, order);
+      stash.fit(patch, axis, order / 2);
+      return defaultParams(order);
+    },
+
+    /** Choose the solution method; "auto" is the default and leaves no field behind. */
+    setMethod(patchName, method) {
+      const patch = state.pdePatch(patchName);
+      if (method === 'auto') delete patch.method;
+      else patch.method = String(method);
+    },
+
+    /** The method the scene asks for ("auto" when it names none). */
+    methodOf(patchName) {
       const patch = state.pdePatches().find((p) => p.name === patchName);
-      if (!patch) throw new Error(`no pde patch named ${JSON.stringify(patchName)}`);
-      patch.operator = patch.operator || {};
-      const current = patch.operator[field];
-      const arr = Array.isArray(current) ? current.slice() : [current ?? 0, current ?? 0, current ?? 0];
-      arr[AXES.indexOf(axis)] = value;
-      patch.operator[field] = arr;
+      return patch && typeof patch.method === 'string' ? patch.method : 'auto';
     },
 
     /** The text handed to the solver. */
@@ -41,4 +72,3 @@ export function createSceneState() {
   };
   return state;
 }
-

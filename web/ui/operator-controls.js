@@ -1,64 +1,48 @@
-// Per pde patch a folder with sliders for b, c, d per component x, y, z. They start
-// from the solver's resolved numbers (scene values may be expressions) and write
-// plain numbers back into the scene's operator field.
+// Per pde patch a folder (data-patch="<name>"): the solution method, then per
+// coordinate x, y, z its operator's order and coefficients. Controls start from the
+// solver's resolved numbers (scene values may be expressions) and write plain numbers
+// back through the handlers, which edit the scene.
 import { escapeHtml } from './html-text.js';
-
-const FIELDS = ['b', 'c', 'd'];
-const AXES = ['x', 'y', 'z'];
-
-// The scene gives no range for operator coefficients: span [0, max(4, 2|v|)] on the
-// value's side of zero, so 0 (a degenerate b) is reachable and reported by the solver.
-function rangeFor(v) {
-  const span = Math.max(4, 2 * Math.abs(v));
-  if (v > 0) return [0, span];
-  if (v < 0) return [-span, 0];
-  return [-span, span];
-}
+import { AXES } from '../state/operator-edit.js';
+import { buildAxisControls } from './axis-controls.js';
+import { buildMethodControls } from './method-controls.js';
 
 /**
- * Build the folders from solved patches. onChange(patchName, field, axis, value).
+ * Build the folders from solved patches. handlers:
+ *   methodOf(patch) -> the scene's method ("auto" if none)
+ *   onParam(patch, axis, name, value)
+ *   onOrder(patch, axis, order) -> the coordinate's new coefficients, or null
+ *   onMethod(patch, method)
  * Returns { update(solvedPatches), destroy() }.
  */
-export function buildOperatorFolders(gui, solvedPatches, onChange) {
+export function buildOperatorFolders(gui, solvedPatches, handlers) {
   const folders = [];
-  const models = new Map(); // patch name -> { model, controllers }
+  const views = new Map(); // patch name -> { method, axes: { x, y, z } }
   for (const patch of solvedPatches) {
     if (patch.kind !== 'pde' || !patch.operator) continue;
-    const folder = gui.addFolder(escapeHtml(`Blend “${patch.name}” operator`));
-    folder.domElement.dataset.patch = patch.name;
-    const model = {};
-    const controllers = [];
-    for (const field of FIELDS) {
-      for (let i = 0; i < 3; i++) {
-        const key = field + AXES[i];
-        const v = patch.operator[field][i];
-        model[key] = v;
-        const [min, max] = rangeFor(v);
-        // No explicit step: lil-gui then snaps slider drags to (max-min)/1000 but keeps a
-        // typed number exact, so small coefficients such as b = 0.001 stay reachable.
-        const ctrl = folder
-          .add(model, key, min, max)
-          .name(`${field} ${AXES[i]}`)
-          .onChange((value) => onChange(patch.name, field, AXES[i], value));
-        ctrl.domElement.dataset.operator = key;
-        controllers.push(ctrl);
-      }
+    const name = patch.name;
+    const folder = gui.addFolder(escapeHtml(`Blend “${name}”`));
+    folder.domElement.dataset.patch = name;
+    const method = buildMethodControls(folder, patch, handlers.methodOf(name), (m) => handlers.onMethod(name, m));
+    const axes = {};
+    for (const axis of AXES) {
+      axes[axis] = buildAxisControls(folder, axis, patch.operator[axis], {
+        onOrder: (order) => handlers.onOrder(name, axis, order),
+        onParam: (param, value) => handlers.onParam(name, axis, param, value),
+      });
     }
     folders.push(folder);
-    models.set(patch.name, { model, controllers });
+    views.set(name, { method, axes });
   }
 
   return {
-    /** Show the resolved numbers of a later solve (expressions follow parameters). */
+    /** Reflect a later solve: resolved numbers, orders and the method used. */
     update(patches) {
       for (const patch of patches) {
-        const entry = models.get(patch.name);
-        if (!entry || !patch.operator) continue;
-        for (const field of FIELDS) {
-          for (let i = 0; i < 3; i++) entry.model[field + AXES[i]] = patch.operator[field][i];
-        }
-        // updateDisplay does not fire onChange, so this cannot loop back into a solve.
-        for (const c of entry.controllers) c.updateDisplay();
+        const view = views.get(patch.name);
+        if (!view || !patch.operator) continue;
+        view.method.update(patch);
+        for (const axis of AXES) view.axes[axis].update(patch.operator[axis]);
       }
     },
     destroy() {

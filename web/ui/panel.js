@@ -10,9 +10,10 @@ const GRID_MAX = 256;
 
 /**
  * examples: [{id, title}]; grid: {nu, nv} (edited in place);
- * onExample(id), onGridChange(), onParameterChange(), onOperatorChange(patch, field, axis, value).
+ * onExample(id), onGridChange(), onParameterChange();
+ * operatorHandlers: see buildOperatorFolders (methodOf, onParam, onOrder, onMethod).
  */
-export function createPanel({ examples, grid, onExample, onGridChange, onParameterChange, onOperatorChange }) {
+export function createPanel({ examples, grid, onExample, onGridChange, onParameterChange, operatorHandlers }) {
   const gui = new GUI({ title: 'pdesurf', width: 320 });
   gui.domElement.id = 'panel';
 
@@ -61,7 +62,7 @@ export function createPanel({ examples, grid, onExample, onGridChange, onParamet
     showSolved(patches) {
       if (operators) operators.update(patches);
       else {
-        operators = buildOperatorFolders(gui, patches, onOperatorChange);
+        operators = buildOperatorFolders(gui, patches, operatorHandlers);
         gridToEnd();
       }
     },
