@@ -8,8 +8,11 @@ namespace pdesurf::cli {
 
 const char* kUsage =
     "usage:\n"
-    "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV]   print u,v,x,y,z on the grid\n"
-    "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]      write every patch as OBJ\n";
+    "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV] [--method M]   print u,v,x,y,z on the grid\n"
+    "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]                   write every patch as OBJ\n"
+    "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
+    "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
+    "  methods: auto, closed, pseudo-navier[:M,N,L], modal:N, fourier:N, pseudo-spectral:N, reference\n";
 
 namespace {
 void parseGrid(const std::string& s, Options& o) {
@@ -31,7 +34,8 @@ Options parseArgs(const std::vector<std::string>& args) {
   if (args.empty()) throw std::runtime_error("missing command");
   Options o;
   o.command = args[0];
-  if (o.command != "sample" && o.command != "export") throw std::runtime_error("unknown command '" + o.command + "'");
+  if (o.command != "sample" && o.command != "export" && o.command != "compare")
+    throw std::runtime_error("unknown command '" + o.command + "'");
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
@@ -39,7 +43,9 @@ Options parseArgs(const std::vector<std::string>& args) {
       return args[++i];
     };
     if (a == "--patch") o.patch = value();
-    else if (a == "--grid") parseGrid(value(), o);
+    else if (a == "--grid") parseGrid(value(), o), o.gridGiven = true;
+    else if (a == "--method") o.method = value();
+    else if (a == "--json") o.json = true;
     else if (a == "-o" || a == "--output") o.output = value();
     else if (!a.empty() && a[0] == '-') throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;

@@ -7,8 +7,9 @@
 namespace pdesurf::cli {
 
 struct Options {
-  std::string command, scenePath, patch, output;
+  std::string command, scenePath, patch, output, method;
   int nu = 16, nv = 16;
+  bool gridGiven = false, json = false;
 };
 
 // Throws std::runtime_error with a usage message.
@@ -17,6 +18,7 @@ std::string readFile(const std::string& path);
 
 int runSample(const Options& o, std::ostream& out);
 int runExport(const Options& o);
+int runCompare(const Options& o, std::ostream& out);
 
 extern const char* kUsage;
 

@@ -14,7 +14,9 @@ int runSample(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
   const Patch* patch = o.patch.empty() ? scene.firstPde() : scene.find(o.patch);
   if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE patch" : "no patch named '" + o.patch + "'");
-  const GridSamples g = sampleGrid(solvePatch(*patch), o.nu, o.nv);
+  Method method;
+  if (!o.method.empty()) method = parseMethod(o.method);
+  const GridSamples g = sampleGrid(solvePatch(*patch, o.method.empty() ? nullptr : &method).surface, o.nu, o.nv);
   out << "u,v,x,y,z\n";
   char line[160];
   for (int j = 0; j <= g.nv; ++j)

@@ -13,7 +13,9 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    return o.command == "sample" ? runSample(o, std::cout) : runExport(o);
+    if (o.command == "sample") return runSample(o, std::cout);
+    if (o.command == "compare") return runCompare(o, std::cout);
+    return runExport(o);
   } catch (const pdesurf::Error& e) {
     std::cerr << "pdesurf: " << o.scenePath << ": " << pdesurf::errorCodeName(e.code()) << ": " << e.what() << "\n";
   } catch (const std::exception& e) {

@@ -67,10 +67,9 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
       p.set("kind", sp.patch->kindName);
       if (sp.patch->kind == PatchKind::Pde) {
         p.set("operator", operatorOf(*sp.patch));
-        p.set("method", std::string("closed"));
+        p.set("method", methodName(sp.used));
         val methods = val::array();
-        methods.call<void>("push", std::string("auto"));
-        methods.call<void>("push", std::string("closed"));
+        for (const std::string& m : applicableMethods(sp.patch->pde)) methods.call<void>("push", m);
         p.set("methods", methods);
       }
       p.set("positions", copyOut(m.positions));

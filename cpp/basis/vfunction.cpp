@@ -2,14 +2,18 @@
 
 #include <cmath>
 
+#include "basis/general_function.hpp"
+
 namespace pdesurf {
 
 double VFunction::eval(double v, int k) const {
+  if (family == Family::General) return general->eval(v, k);
   if (family == Family::Poly) {
     if (k > n) return 0.0;
+    const double s = (v - c) * w;
     double factor = 1.0, power = 1.0;
-    for (int i = 0; i < k; ++i) factor *= n - i;
-    for (int i = 0; i < n - k; ++i) power *= v;
+    for (int i = 0; i < k; ++i) factor *= (n - i) * w;
+    for (int i = 0; i < n - k; ++i) power *= s;
     return factor * power;
   }
   const double a = w * v;
@@ -29,7 +33,8 @@ double VFunction::eval(double v, int k) const {
     case Family::Exp: return wk * std::exp(a);
     case Family::Cosh: return wk * (k % 2 == 0 ? std::cosh(a) : std::sinh(a));
     case Family::Sinh: return wk * (k % 2 == 0 ? std::sinh(a) : std::cosh(a));
-    case Family::Poly: break;
+    case Family::Poly:
+    case Family::General: break;
   }
   return 0.0;
 }
@@ -42,12 +47,13 @@ const char* familyName(Family f) {
     case Family::Exp: return "exp";
     case Family::Cosh: return "cosh";
     case Family::Sinh: return "sinh";
+    case Family::General: return "expr";
   }
   return "?";
 }
 
 bool familyFromName(const std::string& name, Family* out) {
-  static const Family all[] = {Family::Poly, Family::Cos, Family::Sin, Family::Exp, Family::Cosh, Family::Sinh};
+  static const Family all[] = {Family::Poly, Family::Cos, Family::Sin, Family::Exp, Family::Cosh, Family::Sinh, Family::General};
   for (Family f : all)
     if (name == familyName(f)) {
       *out = f;

@@ -2,23 +2,33 @@
 // cosh(wv), sinh(wv). The trigonometric and exponential ones are eigenfunctions of d²/dv²
 // (g'' = sigma g), which turns the PDE into one ODE in u per term.
 #pragma once
+#include <memory>
 #include <string>
 
 namespace pdesurf {
 
-enum class Family { Poly, Cos, Sin, Exp, Cosh, Sinh };
+class GeneralFunction;
+
+// General: any other function of v, typed as an expression (basis/general_function.hpp);
+// only the general methods (pseudo-Navier, modal, …) take it.
+enum class Family { Poly, Cos, Sin, Exp, Cosh, Sinh, General };
 
 struct VFunction {
   Family family = Family::Poly;
-  double w = 1.0;  // frequency (not used by Poly)
+  double w = 1.0;  // frequency; for Poly the scale of ((v - c) w)^n
   int n = 0;       // power (Poly only)
+  double c = 0.0;  // centre (Poly only): the general methods use scaled powers for conditioning
+  std::shared_ptr<const GeneralFunction> general;  // General only
 
   bool isPoly() const { return family == Family::Poly; }
+  bool isGeneral() const { return family == Family::General; }
   // sigma with g'' = sigma g; only meaningful when !isPoly().
   double sigma() const { return (family == Family::Cos || family == Family::Sin) ? -w * w : w * w; }
   // The k-th derivative d^k g / dv^k at v.
   double eval(double v, int k = 0) const;
-  bool operator==(const VFunction& o) const { return family == o.family && w == o.w && n == o.n; }
+  bool operator==(const VFunction& o) const {
+    return family == o.family && w == o.w && n == o.n && c == o.c && general == o.general;
+  }
 };
 
 const char* familyName(Family f);

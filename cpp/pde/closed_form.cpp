@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "basis/general_function.hpp"
 #include "ode/even_ode.hpp"
 #include "pde/poly_in_v.hpp"
 
@@ -17,7 +18,9 @@ const char* kAxis[3] = {"x", "y", "z"};
 
 std::string describe(const VFunction& g) {
   std::ostringstream s;
-  if (g.isPoly()) {
+  if (g.isGeneral()) {
+    s << g.general->text();
+  } else if (g.isPoly()) {
     s << "v^" << g.n;
   } else {
     s << familyName(g.family) << "(" << g.w << "*v)";
@@ -35,6 +38,15 @@ struct Grouped {
 
 std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   std::vector<Grouped> out;
+  auto refuse = [](const VFunction& g) {
+    if (g.isGeneral())
+      throw Error(ErrorCode::InvalidField, "'" + describe(g) + "' has no closed form: use the method auto, modal or pseudo-navier");
+  };
+  for (const VExpansion& e : p.left)
+    for (const VTerm& t : e) refuse(t.g);
+  for (const VExpansion& e : p.right)
+    for (const VTerm& t : e) refuse(t.g);
+  for (const ForceTerm& f : p.force) refuse(f.g);
   auto slot = [&](const VFunction& g) -> Grouped& {
     auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == g; });
     if (it != out.end()) return *it;
@@ -76,6 +88,44 @@ class BasisCache {
   std::vector<Entry> entries_;
 };
 
+// The polynomial terms ((v - c) w)^m of one frame: with s = (v - c) w, d²/dv² = w² d²/ds², so
+// the triangular system runs in s with alpha[j] scaled by w^{2j}.
+void solvePolyFrame(const ComponentProblem& p, int n, double c, double w, std::vector<SeparableTerm>& terms) {
+  auto inFrame = [&](const VFunction& g) { return g.isPoly() && g.c == c && g.w == w; };
+  int top = -1;
+  for (int end = 0; end < 2; ++end)
+    for (const VExpansion& ex : end == 0 ? p.left : p.right)
+      for (const VTerm& t : ex)
+        if (inFrame(t.g)) top = std::max(top, t.g.n);
+  for (const ForceTerm& f : p.force)
+    if (inFrame(f.g)) top = std::max(top, f.g.n);
+  std::vector<std::vector<std::vector<double>>> data(top + 1, std::vector<std::vector<double>>(2, std::vector<double>(n, 0.0)));
+  for (int end = 0; end < 2; ++end) {
+    const auto& side = end == 0 ? p.left : p.right;
+    for (int i = 0; i < n; ++i)
+      for (const VTerm& t : side[i])
+        if (inFrame(t.g)) data[t.g.n][end][i] += t.coef;
+  }
+  std::vector<std::vector<double>> force(top + 1);
+  for (const ForceTerm& f : p.force) {
+    if (!inFrame(f.g)) continue;
+    auto& q = force[f.g.n];
+    if (q.size() < f.uPoly.size()) q.resize(f.uPoly.size(), 0.0);
+    for (size_t k = 0; k < f.uPoly.size(); ++k) q[k] += f.uPoly[k];
+  }
+  std::vector<double> alpha = p.alpha;
+  for (size_t j = 0; j < alpha.size(); ++j) alpha[j] *= std::pow(w, 2.0 * j);
+  const auto g = solvePolyInV(alpha, data, force);
+  for (int m = 0; m <= top; ++m) {
+    VFunction f;
+    f.family = Family::Poly;
+    f.n = m;
+    f.w = w;
+    f.c = c;
+    terms.push_back({f, UFactor::polynomial(g[m])});
+  }
+}
+
 void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<SeparableTerm>& terms) {
   const int n = static_cast<int>(p.alpha.size()) - 1;
   if (n < 1) throw Error(ErrorCode::InvalidField, "the operator has no coefficients");
@@ -99,36 +149,21 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
     }
   }
 
-  // Polynomial terms: one triangular system over all powers.
-  int top = -1;
+  // Polynomial terms: one triangular system per (centre, scale) over all powers.
+  std::vector<std::pair<double, double>> frames;  // (c, w) of ((v - c) w)^m
+  auto frameOf = [&](const VFunction& g) {
+    for (size_t k = 0; k < frames.size(); ++k)
+      if (frames[k].first == g.c && frames[k].second == g.w) return k;
+    frames.emplace_back(g.c, g.w);
+    return frames.size() - 1;
+  };
   for (int end = 0; end < 2; ++end)
     for (const VExpansion& ex : end == 0 ? p.left : p.right)
       for (const VTerm& t : ex)
-        if (t.g.isPoly()) top = std::max(top, t.g.n);
+        if (t.g.isPoly()) frameOf(t.g);
   for (const ForceTerm& f : p.force)
-    if (f.g.isPoly()) top = std::max(top, f.g.n);
-  if (top < 0) return;
-  std::vector<std::vector<std::vector<double>>> data(top + 1, std::vector<std::vector<double>>(2, std::vector<double>(n, 0.0)));
-  for (int end = 0; end < 2; ++end) {
-    const auto& side = end == 0 ? p.left : p.right;
-    for (int i = 0; i < n; ++i)
-      for (const VTerm& t : side[i])
-        if (t.g.isPoly()) data[t.g.n][end][i] += t.coef;
-  }
-  std::vector<std::vector<double>> force(top + 1);
-  for (const ForceTerm& f : p.force) {
-    if (!f.g.isPoly()) continue;
-    auto& q = force[f.g.n];
-    if (q.size() < f.uPoly.size()) q.resize(f.uPoly.size(), 0.0);
-    for (size_t k = 0; k < f.uPoly.size(); ++k) q[k] += f.uPoly[k];
-  }
-  const auto g = solvePolyInV(p.alpha, data, force);
-  for (int m = 0; m <= top; ++m) {
-    VFunction f;
-    f.family = Family::Poly;
-    f.n = m;
-    terms.push_back({f, UFactor::polynomial(g[m])});
-  }
+    if (f.g.isPoly()) frameOf(f.g);
+  for (size_t fr = 0; fr < frames.size(); ++fr) solvePolyFrame(p, n, frames[fr].first, frames[fr].second, terms);
 }
 
 }  // namespace

@@ -1,17 +1,11 @@
-// Scalar arithmetic expressions over named parameters, e.g. "sqrt(2)/2*a", "-30*pi/180".
-// Grammar (precedence low to high): sum (+ -), product (* /), unary (+ -), power (^, right
-// associative, binds tighter than unary minus), primary (number, name, name(expr), (expr)).
-// Errors carry the 1-based column: "col 7: unknown function 'cso'".
+// Scalar expressions in scene fields ("2*a^2", "-30*pi/180"): the expression grammar of
+// expr/parse.hpp without variables, folded to one number.
 #pragma once
-#include <map>
 #include <string>
 
+#include "expr/parse.hpp"
+
 namespace pdesurf {
-
-using ParameterValues = std::map<std::string, double>;
-
-constexpr size_t kMaxExpressionLength = 1000;
-constexpr int kMaxExpressionDepth = 64;
 
 // Throws Error(ParseError | UnknownName | NonFinite).
 double evaluateExpression(const std::string& text, const ParameterValues& parameters);

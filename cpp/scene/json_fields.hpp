@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "pde/pde_problem.hpp"
+#include "basis/general_function.hpp"
 #include "scene/expression.hpp"
 
 namespace pdesurf::scene_json {
@@ -76,34 +77,77 @@ class Resolver {
     return {lo, hi};
   }
 
-  VExpansion terms(const json& j, const std::string& path) const {
+  // allowGeneral: whether "expr" terms and the "general" flag are accepted (not for factors of t).
+  VExpansion terms(const json& j, const std::string& path, bool allowGeneral = true) const {
     if (!j.is_array()) fail(ErrorCode::InvalidField, path, "expected an array of terms");
     if (j.size() > kMaxTerms) fail(ErrorCode::InvalidField, path, "more than " + std::to_string(kMaxTerms) + " terms");
     VExpansion out;
-    for (size_t k = 0; k < j.size(); ++k) {
-      const std::string p = path + "[" + std::to_string(k) + "]";
-      const json& t = j[k];
-      allowOnly(t, p, {"fn", "coef", "w", "n"});
-      VTerm term;
-      const std::string fn = stringField(require(t, "fn", p), p + ".fn");
-      if (!familyFromName(fn, &term.g.family))
-        fail(ErrorCode::UnknownName, p + ".fn", "unknown basis function '" + fn + "' (poly, cos, sin, exp, cosh, sinh)");
-      if (t.contains("coef")) term.coef = number(t["coef"], p + ".coef");
-      if (term.g.isPoly()) {
-        if (t.contains("w")) fail(ErrorCode::InvalidField, p + ".w", "a polynomial term has a power n, not a frequency w");
-        if (t.contains("n")) {
-          const json& n = t["n"];
-          if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > kMaxPower)
-            fail(ErrorCode::InvalidField, p + ".n", "expected an integer power 0.." + std::to_string(kMaxPower));
-          term.g.n = n.get<int>();
-        }
-      } else {
-        if (t.contains("n")) fail(ErrorCode::InvalidField, p + ".n", "only poly terms have a power n");
-        if (t.contains("w")) term.g.w = number(t["w"], p + ".w");
-      }
-      out.push_back(term);
-    }
+    for (size_t k = 0; k < j.size(); ++k) out.push_back(term(j[k], path + "[" + std::to_string(k) + "]", allowGeneral));
     return out;
+  }
+
+  VTerm term(const json& t, const std::string& p, bool allowGeneral) const {
+    allowOnly(t, p, {"fn", "coef", "w", "n", "expr", "general"});
+    VTerm term;
+    const std::string fn = stringField(require(t, "fn", p), p + ".fn");
+    if (!familyFromName(fn, &term.g.family))
+      fail(ErrorCode::UnknownName, p + ".fn", "unknown basis function '" + fn + "' (poly, cos, sin, exp, cosh, sinh, expr)");
+    if (t.contains("coef")) term.coef = number(t["coef"], p + ".coef");
+    if (term.g.isGeneral()) {
+      if (!allowGeneral) fail(ErrorCode::InvalidField, p + ".fn", "an expression is not allowed here");
+      for (const char* k : {"w", "n", "general"})
+        if (t.contains(k)) fail(ErrorCode::InvalidField, p + "." + k, "an expr term takes only \"expr\" and \"coef\"");
+      const std::string text = stringField(require(t, "expr", p), p + ".expr", kMaxExpressionLength);
+      Expr e;
+      try {
+        e = parseExpression(text, values, AllowedVariables{true, false});
+      } catch (const Error& err) {
+        fail(err.code(), p + ".expr", err.what());
+      }
+      term.g.general = std::make_shared<GeneralFunction>(text, e);
+      return term;
+    }
+    if (t.contains("expr")) fail(ErrorCode::InvalidField, p + ".expr", "only fn \"expr\" terms take an expression");
+    if (term.g.isPoly()) {
+      if (t.contains("w")) fail(ErrorCode::InvalidField, p + ".w", "a polynomial term has a power n, not a frequency w");
+      if (t.contains("n")) {
+        const json& n = t["n"];
+        if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > kMaxPower)
+          fail(ErrorCode::InvalidField, p + ".n", "expected an integer power 0.." + std::to_string(kMaxPower));
+        term.g.n = n.get<int>();
+      }
+    } else {
+      if (t.contains("n")) fail(ErrorCode::InvalidField, p + ".n", "only poly terms have a power n");
+      if (t.contains("w")) term.g.w = number(t["w"], p + ".w");
+    }
+    if (t.contains("general")) {
+      // Solve this family term as if it had no closed form (seed 000 Section 3 treats e^v so).
+      if (!allowGeneral) fail(ErrorCode::InvalidField, p + ".general", "not allowed here");
+      if (!t["general"].is_boolean()) fail(ErrorCode::InvalidField, p + ".general", "expected true or false");
+      if (t["general"].get<bool>()) term.g = asGeneral(term.g);
+    }
+    return term;
+  }
+
+  // The same function as a general (expression) one.
+  static VFunction asGeneral(const VFunction& f) {
+    Expr e;
+    const Expr v = variable(ExprVar::V);
+    if (f.isPoly()) {
+      e = power(v, constant(f.n));
+    } else {
+      const Expr wv = multiply(constant(f.w), v);
+      static const ExprFn fns[] = {ExprFn::Cos, ExprFn::Cos, ExprFn::Sin, ExprFn::Exp, ExprFn::Cosh, ExprFn::Sinh};
+      e = call(fns[static_cast<int>(f.family)], wv);
+    }
+    VFunction g;
+    g.family = Family::General;
+    auto general = std::make_shared<GeneralFunction>(
+        f.isPoly() ? "v^" + std::to_string(f.n) : std::string(familyName(f.family)) + "(" + std::to_string(f.w) + "*v)", e);
+    general->hasOrigin = true;
+    general->origin = f;
+    g.general = general;
+    return g;
   }
 
   std::array<VExpansion, 3> vectorTerms(const json& obj, const char* key, const std::string& path) const {

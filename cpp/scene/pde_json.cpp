@@ -101,7 +101,14 @@ std::vector<ForceTerm> parseForce(const json& j, const std::string& path, const 
 }  // namespace
 
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary", "force"});
+  allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary", "force", "method"});
+  if (j.contains("method")) {
+    try {
+      patch.method = parseMethod(stringField(j["method"], path + ".method", 64));
+    } catch (const Error& e) {
+      fail(e.code(), path + ".method", e.what());
+    }
+  }
   const auto vr = r.range(j, "v_range", path, 0.0, 2 * M_PI);
   patch.pde.v0 = vr[0];
   patch.pde.v1 = vr[1];

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/method.hpp"
 #include "pde/pde_problem.hpp"
 #include "surface/separable_surface.hpp"
 
@@ -54,6 +55,7 @@ struct Patch {
   PatchKind kind = PatchKind::Pde;
   std::array<ComponentOperator, 3> op;  // Pde only
   PdeProblem pde;                       // Pde only
+  Method method;                        // Pde only: "method" in the scene, default auto
   PrimarySurface primary;  // Primary only
 };
 
@@ -68,6 +70,7 @@ struct Scene {
 struct SolvedPatch {
   const Patch* patch;
   SeparableSurface surface;
+  Method used;  // Pde only: the method that produced it (auto resolved)
 };
 
 constexpr size_t kMaxSceneBytes = 1 << 20;
@@ -76,7 +79,8 @@ constexpr size_t kMaxSceneBytes = 1 << 20;
 // "patches[0].boundary.x.u0[1][0].coef: col 3: unknown parameter 'r9'".
 Scene parseScene(const std::string& jsonText);
 
-SeparableSurface solvePatch(const Patch& patch);  // throws, message prefixed with the patch name
+// Throws, message prefixed with the patch name. `method` overrides the patch's own.
+SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr);
 std::vector<SolvedPatch> solveScene(const Scene& scene);
 
 }  // namespace pdesurf

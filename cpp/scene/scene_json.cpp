@@ -126,7 +126,7 @@ void parseSeparable(const json& j, const std::string& path, const Resolver& r, P
         allowOnly(tj, tp + ".t", {"fn", "w", "n"});
         json as = tj;
         as["coef"] = 1;
-        tf = r.terms(json::array({as}), tp + ".t").front().g;
+        tf = r.terms(json::array({as}), tp + ".t", false).front().g;
         vpart.erase("t");
       }
       const VTerm vt = r.terms(json::array({vpart}), cp).front();

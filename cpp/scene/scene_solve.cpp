@@ -1,7 +1,7 @@
 #include <string>
 
 #include "common/errors.hpp"
-#include "pde/closed_form.hpp"
+#include "methods/method.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
@@ -42,6 +42,7 @@ UFactor tFactor(const VFunction& f, double coef) {
     case Family::Exp: piece(w, coef); break;
     case Family::Cosh: piece(w, coef / 2), piece(-w, coef / 2); break;
     case Family::Sinh: piece(w, coef / 2), piece(-w, -coef / 2); break;
+    case Family::General: throw Error(ErrorCode::Internal, "a factor of t must be a basis function");
   }
   return out;
 }
@@ -59,10 +60,11 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 }  // namespace
 
-SeparableSurface solvePatch(const Patch& patch) {
+SolvedPatch solvePatch(const Patch& patch, const Method* method) {
   try {
-    if (patch.kind == PatchKind::Primary) return primaryToSeparable(patch.primary);
-    return solveClosedForm(patch.pde);
+    if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}};
+    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method);
+    return {&patch, std::move(m.surface), m.used};
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
   }
@@ -70,7 +72,7 @@ SeparableSurface solvePatch(const Patch& patch) {
 
 std::vector<SolvedPatch> solveScene(const Scene& scene) {
   std::vector<SolvedPatch> out;
-  for (const Patch& p : scene.patches) out.push_back({&p, solvePatch(p)});
+  for (const Patch& p : scene.patches) out.push_back(solvePatch(p));
   return out;
 }
 

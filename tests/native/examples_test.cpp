@@ -83,7 +83,7 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
 
 TEST_CASE("examples: the tessellated mesh reproduces the boundary circle of Fig. 2a") {
   const Scene scene = parseScene(readText(examplePath("you2004-fig2a.json")));
-  const SeparableSurface s = solvePatch(*scene.firstPde());
+  const SeparableSurface s = solvePatch(*scene.firstPde()).surface;
   const GridSamples g = sampleGrid(s, 10, 36);
   for (int j = 0; j <= 36; ++j) {
     const double* x0 = &g.X[3 * (j * 11)];
@@ -100,7 +100,7 @@ TEST_CASE("tessellation: a pole row (cone apex, X_v = 0) gets its neighbours' un
   j["parameters"]["r1"]["min"] = 0;
   j["parameters"]["r1"]["value"] = 0;
   const Scene scene = parseScene(j.dump());
-  const SeparableSurface s = solvePatch(*scene.firstPde());
+  const SeparableSurface s = solvePatch(*scene.firstPde()).surface;
   Mesh m;
   tessellateInto(s, 16, 24, m);
   for (int row = 0; row <= 24; ++row) {

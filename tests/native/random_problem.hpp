@@ -39,6 +39,7 @@ inline VExpansion randomExpansion(std::mt19937& rng, int terms) {
     VTerm t;
     t.g.family = static_cast<Family>(F(rng));
     t.g.w = t.g.family == Family::Exp || t.g.family == Family::Cosh || t.g.family == Family::Sinh ? W(rng) / 4 : W(rng);
+    if (t.g.isPoly()) t.g.w = 1.0;  // scene polynomials are plain powers of v
     t.g.n = P(rng);
     t.coef = C(rng);
     e.push_back(t);

@@ -61,7 +61,7 @@ TEST_CASE("scene errors: fields") {
   CHECK(outcomeOf(j) == "InvalidField: parameters.pi: 'pi' is reserved");
   j = fig2a();
   j["patches"][0]["boundary"]["x"]["u0"][0][0]["fn"] = "cosine";
-  CHECK(outcomeOf(j) == "UnknownName: patches[0].boundary.x.u0[0][0].fn: unknown basis function 'cosine' (poly, cos, sin, exp, cosh, sinh)");
+  CHECK(outcomeOf(j) == "UnknownName: patches[0].boundary.x.u0[0][0].fn: unknown basis function 'cosine' (poly, cos, sin, exp, cosh, sinh, expr)");
   j = fig2a();
   j["patches"][0]["boundary"]["z"]["u1"] = json::array({json::array(), json::array(), json::array()});
   CHECK(outcomeOf(j) == "InvalidField: patches[0].boundary.z.u1: an order-4 operator takes at most 2 conditions [X, dX/du]");

@@ -1,0 +1,22 @@
+#include "basis/general_function.hpp"
+
+#include "common/errors.hpp"
+
+namespace pdesurf {
+
+namespace {
+constexpr size_t kMaxDerivativeNodes = 200000;  // a bound on symbolic swell
+}
+
+double GeneralFunction::eval(double v, int k) const {
+  while (static_cast<int>(derivs_.size()) <= k) {
+    Expr next = derivative(derivs_.back(), ExprVar::V);
+    if (nodeCount(next) > kMaxDerivativeNodes)
+      throw Error(ErrorCode::InvalidField, "'" + text_ + "' is too complex to differentiate " + std::to_string(k) + " times");
+    derivs_.push_back(std::move(next));
+  }
+  const double vars[2] = {v, 0.0};
+  return evaluate(*derivs_[k], vars);
+}
+
+}  // namespace pdesurf

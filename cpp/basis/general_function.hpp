@@ -1,0 +1,29 @@
+// A boundary function of v outside the closed-form families, typed as an expression
+// ("sqrt((r+k1)^2 - s^2*cos(v)^2)"). Its v-derivatives are formed symbolically on demand (the
+// general methods need up to the operator's order) and cached.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "basis/vfunction.hpp"
+#include "expr/expr.hpp"
+
+namespace pdesurf {
+
+class GeneralFunction {
+ public:
+  GeneralFunction(std::string text, Expr e) : text_(std::move(text)) { derivs_.push_back(std::move(e)); }
+  const std::string& text() const { return text_; }
+  // A family function marked "general" in the scene remembers what it is, so the exact
+  // (closed) solution stays available to measure the general methods against.
+  bool hasOrigin = false;
+  VFunction origin;
+  // d^k g / dv^k at v; NaN or inf where the expression is not finite (callers check).
+  double eval(double v, int k) const;
+
+ private:
+  std::string text_;
+  mutable std::vector<Expr> derivs_;  // derivs_[k] = k-th derivative, grown on demand
+};
+
+}  // namespace pdesurf

@@ -1,0 +1,161 @@
+#include "methods/approximate.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include "basis/general_function.hpp"
+#include "common/errors.hpp"
+
+namespace pdesurf {
+
+double expansionValue(const VExpansion& f, double v, int k) {
+  double s = 0.0;
+  for (const VTerm& t : f) s += t.coef * t.g.eval(v, k);
+  return s;
+}
+
+namespace {
+
+// Names the offending term: "'sqrt(1 - 4*cos(v)^2)' is not finite at v = 0".
+void requireFinite(const VExpansion& f, double v) {
+  for (const VTerm& t : f) {
+    const double x = t.g.eval(v);
+    if (std::isfinite(x)) continue;
+    const std::string name = t.g.isGeneral() ? t.g.general->text() : std::string(familyName(t.g.family));
+    throw Error(ErrorCode::NonFinite, "'" + name + "' is not finite at v = " + std::to_string(v));
+  }
+}
+
+}  // namespace
+
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N) {
+  const double L = v1 - v0, omega = 2 * M_PI / L;
+  const int K = std::max(1024, 16 * N);
+  std::vector<double> samples(K + 1);
+  for (int j = 0; j <= K; ++j) {
+    samples[j] = expansionValue(f, v0 + L * j / K);
+    if (!std::isfinite(samples[j])) requireFinite(f, v0 + L * j / K);
+  }
+  // a_k - i b_k = (2/K) Σ_j w_j f_j e^{-ikωv_j}: powers of e^{iωv_j} instead of 2N trig calls per sample.
+  std::vector<double> a(N + 1, 0.0), b(N + 1, 0.0);
+  for (int j = 0; j <= K; ++j) {
+    const double v = v0 + L * j / K, weight = ((j == 0 || j == K) ? 0.5 : 1.0) * samples[j];
+    const std::complex<double> z(std::cos(omega * v), std::sin(omega * v));
+    std::complex<double> zk = 1.0;
+    for (int k = 0; k <= N; ++k) {
+      a[k] += weight * zk.real();
+      b[k] += weight * zk.imag();
+      zk *= z;
+    }
+  }
+  VExpansion out;
+  out.push_back({VFunction{Family::Poly, 1.0, 0}, a[0] / K});
+  for (int k = 1; k <= N; ++k) {
+    out.push_back({VFunction{Family::Cos, k * omega, 0}, 2.0 * a[k] / K});
+    out.push_back({VFunction{Family::Sin, k * omega, 0}, 2.0 * b[k] / K});
+  }
+  return out;
+}
+
+VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N) {
+  const double c = 0.5 * (v0 + v1), w = 2.0 / (v1 - v0);
+  // Values at the Chebyshev points, then coefficients of T_k, then powers of s.
+  std::vector<double> val(N + 1), cheb(N + 1, 0.0);
+  for (int j = 0; j <= N; ++j) {
+    const double s = std::cos(M_PI * (j + 0.5) / (N + 1));
+    val[j] = expansionValue(f, c + s / w);
+    if (!std::isfinite(val[j])) requireFinite(f, c + s / w);
+  }
+  for (int k = 0; k <= N; ++k) {
+    double sum = 0.0;
+    for (int j = 0; j <= N; ++j) sum += val[j] * std::cos(M_PI * k * (j + 0.5) / (N + 1));
+    cheb[k] = sum * (k == 0 ? 1.0 : 2.0) / (N + 1);
+  }
+  // Σ cheb[k] T_k(s) in powers of s, with T_k = 2 s T_{k-1} - T_{k-2}.
+  std::vector<double> power(N + 1, 0.0);
+  std::vector<double> older(N + 1, 0.0), old(N + 1, 0.0);  // T_{k-2}, T_{k-1}
+  for (int k = 0; k <= N; ++k) {
+    std::vector<double> t(N + 1, 0.0);
+    if (k == 0) t[0] = 1.0;
+    else if (k == 1) t[1] = 1.0;
+    else
+      for (int d = 0; d <= N; ++d) t[d] = (d > 0 ? 2 * old[d - 1] : 0.0) - older[d];
+    for (int d = 0; d <= N; ++d) power[d] += cheb[k] * t[d];
+    older.swap(old);
+    old.swap(t);
+  }
+  VExpansion out;
+  for (int d = 0; d <= N; ++d) {
+    VFunction g{Family::Poly, w, d};
+    g.c = c;
+    out.push_back({g, power[d]});
+  }
+  return out;
+}
+
+bool isPeriodic(const VExpansion& f, double v0, double v1) {
+  for (int k = 0; k <= 2; ++k) {
+    const double a = expansionValue(f, v0, k), b = expansionValue(f, v1, k);
+    if (std::abs(a - b) > 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b)))) return false;
+  }
+  return true;
+}
+
+PdeProblem mapSlots(const PdeProblem& p, const std::function<VExpansion(const VExpansion&)>& map) {
+  PdeProblem out = p;
+  for (auto& c : out.component) {
+    for (auto& slot : c.left) slot = map(slot);
+    for (auto& slot : c.right) slot = map(slot);
+  }
+  return out;
+}
+
+VExpansion generalPart(const VExpansion& slot) {
+  VExpansion out;
+  for (const VTerm& t : slot)
+    if (t.g.isGeneral()) out.push_back(t);
+  return out;
+}
+
+VExpansion familyPart(const VExpansion& slot) {
+  VExpansion out;
+  for (const VTerm& t : slot)
+    if (!t.g.isGeneral()) out.push_back(t);
+  return out;
+}
+
+bool hasGeneralTerms(const PdeProblem& p) {
+  for (const auto& c : p.component) {
+    for (const auto& slot : c.left)
+      if (!generalPart(slot).empty()) return true;
+    for (const auto& slot : c.right)
+      if (!generalPart(slot).empty()) return true;
+    for (const ForceTerm& f : c.force)
+      if (f.g.isGeneral()) return true;
+  }
+  return false;
+}
+
+}  // namespace pdesurf
+
+namespace pdesurf {
+
+bool restoreFamilies(const PdeProblem& p, PdeProblem* out) {
+  bool complete = true;
+  *out = mapSlots(p, [&](const VExpansion& slot) {
+    VExpansion r;
+    for (VTerm t : slot) {
+      if (t.g.isGeneral()) {
+        if (t.g.general->hasOrigin) t.g = t.g.general->origin;
+        else complete = false;
+      }
+      r.push_back(t);
+    }
+    return r;
+  });
+  for (const auto& c : p.component)
+    for (const ForceTerm& f : c.force) complete = complete && !f.g.isGeneral();
+  return complete;
+}
+
+}  // namespace pdesurf

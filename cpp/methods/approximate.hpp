@@ -1,0 +1,35 @@
+// Approximations of boundary functions by basis families, so that the closed form can solve
+// what the families cannot express: truncated Fourier series (periodic data; also the
+// Bloor-Wilson baselines, which expand every boundary function so) and Chebyshev
+// interpolants written as scaled powers ((v - c) w)^n (open data).
+#pragma once
+#include <functional>
+
+#include "pde/pde_problem.hpp"
+
+namespace pdesurf {
+
+double expansionValue(const VExpansion& f, double v, int k = 0);
+
+// f ≈ a_0 + Σ_{k=1}^{N} a_k cos(k ω v) + b_k sin(k ω v), ω = 2π / (v1 - v0): the Fourier series
+// of f's periodic extension, coefficients by the trapezoidal rule (which takes the mean of a
+// jump at the ends, as the series does).
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N);
+
+// The degree-N Chebyshev interpolant of f on [v0, v1] as powers of s = (v - c) w in [-1, 1].
+VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N);
+
+// Whether f and its first two derivatives agree at v0 and v1 (so Fourier modes converge fast).
+bool isPeriodic(const VExpansion& f, double v0, double v1);
+
+// A copy of the problem with every boundary slot (component, end, derivative) replaced by map(slot).
+PdeProblem mapSlots(const PdeProblem& p, const std::function<VExpansion(const VExpansion&)>& map);
+
+// The general (expression) terms of a slot, and the rest.
+VExpansion generalPart(const VExpansion& slot);
+VExpansion familyPart(const VExpansion& slot);
+bool hasGeneralTerms(const PdeProblem& p);
+// Family terms marked "general" turned back into their families; true if nothing general is left.
+bool restoreFamilies(const PdeProblem& p, PdeProblem* out);
+
+}  // namespace pdesurf

@@ -1,0 +1,62 @@
+#include "methods/measures.hpp"
+
+#include <cmath>
+
+#include "methods/approximate.hpp"
+
+namespace pdesurf {
+
+double relativeError(const SeparableSurface& ref, const SeparableSurface& other, int Iu, int Jv) {
+  double sum = 0.0;
+  for (int i = 0; i < Iu; ++i)
+    for (int j = 0; j < Jv; ++j) {
+      const double u = ref.u0 + (ref.u1 - ref.u0) * i / (Iu - 1), v = ref.v0 + (ref.v1 - ref.v0) * j / (Jv - 1);
+      const Eigen::Vector3d a = evalPoint(ref, u, v), b = evalPoint(other, u, v);
+      sum += (a - b).norm() / a.norm();
+    }
+  return sum / (static_cast<double>(Iu) * Jv);
+}
+
+double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const ComponentProblem& cp = p.component[c];
+    for (int end = 0; end < 2; ++end)
+      for (size_t i = 0; i < cp.left.size(); ++i)
+        for (int k = 0; k <= 200; ++k) {
+          const double v = p.v0 + (p.v1 - p.v0) * k / 200;
+          const double want = expansionValue((end == 0 ? cp.left : cp.right)[i], v);
+          const double got = evalComponent(s, c, end, v, static_cast<int>(i), 0);
+          worst = std::max(worst, std::abs(got - want) / std::max(1.0, std::abs(want)));
+        }
+  }
+  return worst;
+}
+
+double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const ComponentProblem& cp = p.component[c];
+    const int n = static_cast<int>(cp.alpha.size()) - 1;
+    for (int iu = 1; iu < 20; ++iu)
+      for (int iv = 0; iv <= 20; ++iv) {
+        const double u = iu / 20.0, v = p.v0 + (p.v1 - p.v0) * iv / 20;
+        double f = 0.0;
+        for (const ForceTerm& t : cp.force) {
+          double q = 0.0;
+          for (size_t k = t.uPoly.size(); k-- > 0;) q = q * u + t.uPoly[k];
+          f += q * t.g.eval(v);
+        }
+        double sum = -f, mag = std::abs(f);
+        for (int k = 0; k <= n; ++k) {
+          const double part = cp.alpha[k] * evalComponent(s, c, u, v, 2 * (n - k), 2 * k);
+          sum += part;
+          mag += std::abs(part);
+        }
+        worst = std::max(worst, std::abs(sum) / std::max(1.0, mag));
+      }
+  }
+  return worst;
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,20 @@
+// How far a solution is from another and from its own problem.
+#pragma once
+#include "pde/pde_problem.hpp"
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf {
+
+// Seed 000 Eq. 24: the mean over an Iu × Jv grid of |X_ref - X| / |X_ref|, with
+// u_i = i/(Iu-1), v_j = v0 + (v1-v0) j/(Jv-1) (both ends included: the paper says only
+// "uniformly distributed points within the blending surface").
+double relativeError(const SeparableSurface& reference, const SeparableSurface& other, int Iu, int Jv);
+
+// The largest boundary-condition error of any component, end and derivative order over 201
+// v-samples, relative to max(1, |prescribed value|).
+double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s);
+
+// The largest |L X - f| over an interior 21×21 grid, relative to max(1, Σ |parts|).
+double pdeResidual(const PdeProblem& p, const SeparableSurface& s);
+
+}  // namespace pdesurf

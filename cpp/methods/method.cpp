@@ -1,0 +1,114 @@
+#include "methods/method.hpp"
+
+#include <cstdlib>
+
+#include "common/errors.hpp"
+#include "methods/approximate.hpp"
+#include "pde/closed_form.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+int parseCount(const std::string& text, const std::string& whole) {
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < 1 || v > 4096)
+    throw Error(ErrorCode::InvalidField, "method '" + whole + "': expected a whole number of terms, got '" + text + "'");
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+Method parseMethod(const std::string& text) {
+  const size_t colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  const std::string arg = colon == std::string::npos ? "" : text.substr(colon + 1);
+  Method m;
+  auto needs = [&](bool wantArg) {
+    if (wantArg && arg.empty()) throw Error(ErrorCode::InvalidField, "method '" + name + "' needs a number of terms, e.g. '" + name + ":20'");
+    if (!wantArg && colon != std::string::npos) throw Error(ErrorCode::InvalidField, "method '" + name + "' takes no options");
+  };
+  if (name == "auto") needs(false), m.kind = MethodKind::Auto;
+  else if (name == "closed") needs(false), m.kind = MethodKind::Closed;
+  else if (name == "reference") needs(false), m.kind = MethodKind::Reference;
+  else if (name == "modal") needs(true), m.kind = MethodKind::Modal, m.terms = parseCount(arg, text);
+  else if (name == "fourier") needs(true), m.kind = MethodKind::Fourier, m.terms = parseCount(arg, text);
+  else if (name == "pseudo-spectral") needs(true), m.kind = MethodKind::PseudoSpectral, m.terms = parseCount(arg, text);
+  else if (name == "pseudo-navier") {
+    m.kind = MethodKind::PseudoNavier;
+    if (colon != std::string::npos) {  // M,N,L
+      const size_t a = arg.find(','), b = arg.find(',', a == std::string::npos ? a : a + 1);
+      if (a == std::string::npos || b == std::string::npos)
+        throw Error(ErrorCode::InvalidField, "method '" + text + "': expected pseudo-navier:M,N,L");
+      m.navierM = parseCount(arg.substr(0, a), text);
+      m.navierN = parseCount(arg.substr(a + 1, b - a - 1), text);
+      m.navierPoints = parseCount(arg.substr(b + 1), text);
+    }
+  } else {
+    throw Error(ErrorCode::InvalidField, "unknown method '" + text + "' (auto, closed, pseudo-navier, modal:N, fourier:N, pseudo-spectral:N, reference)");
+  }
+  return m;
+}
+
+std::string methodName(const Method& m) {
+  switch (m.kind) {
+    case MethodKind::Auto: return "auto";
+    case MethodKind::Closed: return "closed";
+    case MethodKind::Reference: return "reference";
+    case MethodKind::Modal: return "modal:" + std::to_string(m.terms);
+    case MethodKind::Fourier: return "fourier:" + std::to_string(m.terms);
+    case MethodKind::PseudoSpectral: return "pseudo-spectral:" + std::to_string(m.terms);
+    case MethodKind::PseudoNavier:
+      if (m.navierM == 3 && m.navierN == 3 && m.navierPoints == 49) return "pseudo-navier";
+      return "pseudo-navier:" + std::to_string(m.navierM) + "," + std::to_string(m.navierN) + "," + std::to_string(m.navierPoints);
+  }
+  return "?";
+}
+
+std::vector<std::string> applicableMethods(const PdeProblem& p) {
+  bool forces = false;
+  for (const auto& c : p.component) forces = forces || !c.force.empty();
+  std::vector<std::string> out{"auto"};
+  PdeProblem restored;
+  if (restoreFamilies(p, &restored)) out.push_back("closed");
+  out.push_back("pseudo-navier");
+  for (const char* m : {"modal:4", "modal:16", "modal:64"}) out.push_back(m);
+  if (!forces)
+    for (const char* m : {"fourier:20", "fourier:100", "pseudo-spectral:2", "pseudo-spectral:5"}) out.push_back(m);
+  out.push_back("reference");
+  return out;
+}
+
+MethodSolution solveWithMethod(const PdeProblem& p, const Method& m) {
+  MethodSolution out;
+  out.used = m;
+  switch (m.kind) {
+    case MethodKind::Auto: {
+      PdeProblem restored;
+      if (restoreFamilies(p, &restored)) {
+        out.surface = solveClosedForm(restored);
+        out.used.kind = MethodKind::Closed;
+        return out;
+      }
+      out = solveReference(p, 1e-9);
+      out.used.kind = MethodKind::Modal;
+      out.used.terms = out.referenceTerms;
+      return out;
+    }
+    case MethodKind::Closed: {
+      PdeProblem restored;
+      restoreFamilies(p, &restored);  // what stays general makes the closed form refuse, by name
+      out.surface = solveClosedForm(restored);
+      return out;
+    }
+    case MethodKind::Reference: return solveReference(p);
+    case MethodKind::Modal: out.surface = solveModal(p, m.terms); return out;
+    case MethodKind::Fourier: out.surface = solveFourier(p, m.terms); return out;
+    case MethodKind::PseudoSpectral: out.surface = solvePseudoSpectral(p, m.terms); return out;
+    case MethodKind::PseudoNavier: out.surface = solvePseudoNavier(p, m.navierM, m.navierN, m.navierPoints); return out;
+  }
+  return out;
+}
+
+}  // namespace pdesurf
