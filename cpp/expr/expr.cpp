@@ -152,6 +152,22 @@ bool dependsOn(const Expr& e, ExprVar v) {
 
 size_t nodeCount(const Expr& e) { return e ? 1 + nodeCount(e->a) + nodeCount(e->b) : 0; }
 
+Expr substitute(const Expr& e, ExprVar var, double value) {
+  if (!dependsOn(e, var)) return e;
+  switch (e->op) {
+    case Op::Var: return constant(value);
+    case Op::Neg: return negate(substitute(e->a, var, value));
+    case Op::Add: return add(substitute(e->a, var, value), substitute(e->b, var, value));
+    case Op::Sub: return subtract(substitute(e->a, var, value), substitute(e->b, var, value));
+    case Op::Mul: return multiply(substitute(e->a, var, value), substitute(e->b, var, value));
+    case Op::Div: return divide(substitute(e->a, var, value), substitute(e->b, var, value));
+    case Op::Pow: return power(substitute(e->a, var, value), substitute(e->b, var, value));
+    case Op::Call: return call(e->fn, substitute(e->a, var, value));
+    case Op::Const: break;
+  }
+  return e;
+}
+
 Expr derivative(const Expr& e, ExprVar var) {
   if (!dependsOn(e, var)) return constant(0.0);
   const Expr& a = e->a;

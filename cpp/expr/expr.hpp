@@ -44,5 +44,7 @@ bool dependsOn(const Expr& e, ExprVar v);
 // d e / d var, simplified by the builders.
 Expr derivative(const Expr& e, ExprVar var);
 size_t nodeCount(const Expr& e);
+// e with the variable replaced by a number (folded by the builders).
+Expr substitute(const Expr& e, ExprVar var, double value);
 
 }  // namespace pdesurf

@@ -93,6 +93,72 @@ VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N
   return out;
 }
 
+namespace {
+
+VExpansion asExpansion(const GeneralForce& f, double u) {
+  VFunction g;
+  g.family = Family::General;
+  g.general = std::make_shared<GeneralFunction>(f.text, substitute(f.f, ExprVar::U, u));
+  return {{g, 1.0}};
+}
+
+}  // namespace
+
+std::vector<ForceTerm> approximateForce(const GeneralForce& f, double v0, double v1, int N) {
+  const int Du = std::min(N, 16);
+  bool periodic = true;
+  for (double u : {0.0, 0.5, 1.0}) periodic = periodic && isPeriodic(asExpansion(f, u), v0, v1);
+  // coefficients[i][k]: the k-th v-term's coefficient at the i-th Chebyshev node in u.
+  std::vector<VTerm> basis;
+  std::vector<std::vector<double>> coefficients;
+  for (int i = 0; i <= Du; ++i) {
+    const double u = 0.5 + 0.5 * std::cos(M_PI * (i + 0.5) / (Du + 1));
+    const VExpansion e = asExpansion(f, u);
+    const VExpansion approx = periodic ? fourierSeries(e, v0, v1, N) : chebyshevInterpolant(e, v0, v1, std::min(N, 20));
+    if (basis.empty()) basis = approx;
+    std::vector<double> c;
+    for (const VTerm& t : approx) c.push_back(t.coef);
+    coefficients.push_back(c);
+  }
+  std::vector<ForceTerm> out;
+  for (size_t k = 0; k < basis.size(); ++k) {
+    // Chebyshev coefficients in s = 2u - 1, then powers of s, then powers of u.
+    std::vector<double> cheb(Du + 1, 0.0);
+    for (int m = 0; m <= Du; ++m) {
+      double sum = 0.0;
+      for (int i = 0; i <= Du; ++i) sum += coefficients[i][k] * std::cos(M_PI * m * (i + 0.5) / (Du + 1));
+      cheb[m] = sum * (m == 0 ? 1.0 : 2.0) / (Du + 1);
+    }
+    std::vector<double> inS(Du + 1, 0.0), older(Du + 1, 0.0), old(Du + 1, 0.0);
+    for (int m = 0; m <= Du; ++m) {
+      std::vector<double> t(Du + 1, 0.0);
+      if (m == 0) t[0] = 1.0;
+      else if (m == 1) t[1] = 1.0;
+      else
+        for (int d = 0; d <= Du; ++d) t[d] = (d > 0 ? 2 * old[d - 1] : 0.0) - older[d];
+      for (int d = 0; d <= Du; ++d) inS[d] += cheb[m] * t[d];
+      older.swap(old);
+      old.swap(t);
+    }
+    std::vector<double> inU(Du + 1, 0.0);  // (2u - 1)^d expanded
+    for (int d = 0; d <= Du; ++d) {
+      double binom = 1.0;
+      for (int j = 0; j <= d; ++j) {
+        inU[j] += inS[d] * binom * std::pow(2.0, j) * ((d - j) % 2 ? -1.0 : 1.0);
+        binom = binom * (d - j) / (j + 1);
+      }
+    }
+    out.push_back({basis[k].g, inU});
+  }
+  return out;
+}
+
+PdeProblem familyProblem(const PdeProblem& p) {
+  PdeProblem q = mapSlots(p, familyPart);
+  for (auto& c : q.component) c.generalForce.clear();
+  return q;
+}
+
 bool isPeriodic(const VExpansion& f, double v0, double v1) {
   for (int k = 0; k <= 2; ++k) {
     const double a = expansionValue(f, v0, k), b = expansionValue(f, v1, k);
@@ -130,8 +196,7 @@ bool hasGeneralTerms(const PdeProblem& p) {
       if (!generalPart(slot).empty()) return true;
     for (const auto& slot : c.right)
       if (!generalPart(slot).empty()) return true;
-    for (const ForceTerm& f : c.force)
-      if (f.g.isGeneral()) return true;
+    if (!c.generalForce.empty()) return true;
   }
   return false;
 }
@@ -153,8 +218,7 @@ bool restoreFamilies(const PdeProblem& p, PdeProblem* out) {
     }
     return r;
   });
-  for (const auto& c : p.component)
-    for (const ForceTerm& f : c.force) complete = complete && !f.g.isGeneral();
+  for (const auto& c : p.component) complete = complete && c.generalForce.empty();
   return complete;
 }
 

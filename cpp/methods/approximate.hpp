@@ -22,6 +22,14 @@ VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N
 // Whether f and its first two derivatives agree at v0 and v1 (so Fourier modes converge fast).
 bool isPeriodic(const VExpansion& f, double v0, double v1);
 
+// A general force f(u, v) as family force terms: in v its Fourier series (periodic in v) or
+// Chebyshev interpolant (not), N terms as above; in u the Chebyshev interpolant of degree
+// min(N, 16) of each coefficient on [0, 1].
+std::vector<ForceTerm> approximateForce(const GeneralForce& f, double v0, double v1, int N);
+
+// The problem without anything general (slots' general terms and general forces dropped).
+PdeProblem familyProblem(const PdeProblem& p);
+
 // A copy of the problem with every boundary slot (component, end, derivative) replaced by map(slot).
 PdeProblem mapSlots(const PdeProblem& p, const std::function<VExpansion(const VExpansion&)>& map);
 

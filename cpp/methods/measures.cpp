@@ -47,6 +47,8 @@ double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
           for (size_t k = t.uPoly.size(); k-- > 0;) q = q * u + t.uPoly[k];
           f += q * t.g.eval(v);
         }
+        const double vars[2] = {v, u};
+        for (const GeneralForce& g : cp.generalForce) f += evaluate(*g.f, vars);
         double sum = -f, mag = std::abs(f);
         for (int k = 0; k <= n; ++k) {
           const double part = cp.alpha[k] * evalComponent(s, c, u, v, 2 * (n - k), 2 * k);

@@ -5,6 +5,7 @@
 // geometrically for smooth periodic data; for open data down to ~1e-7 (see kMaxOpenDegree).
 #include <cmath>
 
+#include "basis/general_function.hpp"
 #include "common/errors.hpp"
 #include "methods/approximate.hpp"
 #include "methods/method.hpp"
@@ -19,10 +20,7 @@ namespace {
 constexpr int kMaxOpenDegree = 20;
 
 PdeProblem modalProblem(const PdeProblem& p, int N) {
-  for (const auto& c : p.component)
-    for (const ForceTerm& f : c.force)
-      if (f.g.isGeneral()) throw Error(ErrorCode::InvalidField, "modal: general forces are not supported yet");
-  return mapSlots(p, [&](const VExpansion& slot) {
+  PdeProblem q = mapSlots(p, [&](const VExpansion& slot) {
     VExpansion out = familyPart(slot);
     const VExpansion gen = generalPart(slot);
     if (gen.empty()) return out;
@@ -31,6 +29,14 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
     out.insert(out.end(), approx.begin(), approx.end());
     return out;
   });
+  for (auto& c : q.component) {
+    for (const GeneralForce& f : c.generalForce) {
+      const auto terms = approximateForce(f, p.v0, p.v1, N);
+      c.force.insert(c.force.end(), terms.begin(), terms.end());
+    }
+    c.generalForce.clear();
+  }
+  return q;
 }
 
 // Largest difference between two surfaces over a 33×33 grid, relative to the first's size.
@@ -47,6 +53,14 @@ double change(const SeparableSurface& a, const SeparableSurface& b) {
 }
 
 bool allPeriodic(const PdeProblem& p) {
+  for (const auto& c : p.component)
+    for (const GeneralForce& f : c.generalForce)
+      for (double u : {0.0, 0.5, 1.0}) {
+        VFunction g;
+        g.family = Family::General;
+        g.general = std::make_shared<GeneralFunction>(f.text, substitute(f.f, ExprVar::U, u));
+        if (!isPeriodic({{g, 1.0}}, p.v0, p.v1)) return false;
+      }
   for (const auto& c : p.component)
     for (const auto* side : {&c.left, &c.right})
       for (const VExpansion& slot : *side) {

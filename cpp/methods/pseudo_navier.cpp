@@ -67,11 +67,7 @@ SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points
   const int P = static_cast<int>(std::lround(std::sqrt(static_cast<double>(points))));
   if (P < 2 || P * P != points || P > 64)
     throw Error(ErrorCode::InvalidField, "pseudo-navier collocation points must be a square grid P×P, 4 <= P² <= 4096");
-  for (const auto& c : p.component)
-    for (const ForceTerm& f : c.force)
-      if (f.g.isGeneral()) throw Error(ErrorCode::InvalidField, "pseudo-navier: general forces are not supported yet");
-
-  SeparableSurface s = solveClosedForm(mapSlots(p, familyPart));
+  SeparableSurface s = solveClosedForm(familyProblem(p));
   for (int c = 0; c < 3; ++c) {
     const ComponentProblem& cp = p.component[c];
     const int n = static_cast<int>(cp.alpha.size()) - 1;
@@ -82,7 +78,7 @@ SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points
         g[end * n + i] = generalPart((end == 0 ? cp.left : cp.right)[i]);
         any = any || !g[end * n + i].empty();
       }
-    if (!any) continue;
+    if (!any && cp.generalForce.empty()) continue;
     const auto h = hermiteBasis(n);
     std::vector<UFactor> hs(2 * n);
     for (int slot = 0; slot < 2 * n; ++slot) {
@@ -105,8 +101,13 @@ SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points
           if (g[slot].empty()) continue;
           for (int k = 0; k <= n; ++k) known += cp.alpha[k] * hs[slot].eval(u, 2 * (n - k)) * expansionValue(g[slot], v, 2 * k);
         }
-        if (!std::isfinite(known)) throw Error(ErrorCode::NonFinite, "pseudo-navier: a general boundary function is not finite at v = " + std::to_string(v));
-        rhs(row) = -known;
+        double force = 0.0;  // the general force; family forces are solved exactly above
+        const double vars[2] = {v, u};
+        for (const GeneralForce& f : cp.generalForce) force += evaluate(*f.f, vars);
+        if (!std::isfinite(known) || !std::isfinite(force))
+          throw Error(ErrorCode::NonFinite, "pseudo-navier: a general boundary function or force is not finite at (u, v) = (" +
+                                                std::to_string(u) + ", " + std::to_string(v) + ")");
+        rhs(row) = force - known;  // minimise |L X - f| at the point
         for (int m = 1; m <= M; ++m)
           for (int k2 = 1; k2 <= N; ++k2) {
             double op = 0.0;

@@ -47,6 +47,8 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   for (const VExpansion& e : p.right)
     for (const VTerm& t : e) refuse(t.g);
   for (const ForceTerm& f : p.force) refuse(f.g);
+  if (!p.generalForce.empty())
+    throw Error(ErrorCode::InvalidField, "the force '" + p.generalForce.front().text + "' has no closed form: use the method auto, modal or pseudo-navier");
   auto slot = [&](const VFunction& g) -> Grouped& {
     auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == g; });
     if (it != out.end()) return *it;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "basis/vfunction.hpp"
+#include "expr/expr.hpp"
 
 namespace pdesurf {
 
@@ -24,9 +25,16 @@ struct ForceTerm {
   std::vector<double> uPoly;
 };
 
+// A force outside the families: an expression in u and v (only the general methods take it).
+struct GeneralForce {
+  std::string text;
+  Expr f;
+};
+
 struct ComponentProblem {
   std::vector<double> alpha;     // n + 1 operator coefficients, alpha[0] != 0
   std::vector<ForceTerm> force;  // right-hand side, a sum of terms
+  std::vector<GeneralForce> generalForce;  // more right-hand side, outside the families
   std::vector<VExpansion> left;  // left[i]  = ∂^i X/∂u^i at u = 0, i < n
   std::vector<VExpansion> right; // right[i] = ∂^i X/∂u^i at u = 1
 };

@@ -73,14 +73,28 @@ void checkLeading(const ComponentOperator& op, const json& o, const std::string&
            "th u-derivative: the PDE loses its order");
 }
 
-std::vector<ForceTerm> parseForce(const json& j, const std::string& path, const Resolver& r) {
+// Family terms with an optional polynomial "u" become ForceTerms; "expr" terms (in u and v)
+// become GeneralForces.
+void parseForce(const json& j, const std::string& path, const Resolver& r, ComponentProblem& cp) {
   if (!j.is_array()) fail(ErrorCode::InvalidField, path, "expected an array of force terms");
-  std::vector<ForceTerm> out;
-  json plain = json::array();  // the same terms without "u", for the shared term parser
+  if (j.size() > kMaxTerms) fail(ErrorCode::InvalidField, path, "more than " + std::to_string(kMaxTerms) + " terms");
   for (size_t k = 0; k < j.size(); ++k) {
     const std::string p = path + "[" + std::to_string(k) + "]";
     if (!j[k].is_object()) fail(ErrorCode::InvalidField, p, "expected an object");
     json t = j[k];
+    if (t.contains("fn") && t["fn"] == "expr") {
+      allowOnly(t, p, {"fn", "expr", "coef"});
+      const std::string text = stringField(require(t, "expr", p), p + ".expr", kMaxExpressionLength);
+      const double coef = t.contains("coef") ? r.number(t["coef"], p + ".coef") : 1.0;
+      Expr e;
+      try {
+        e = parseExpression(text, r.values, AllowedVariables{true, true});
+      } catch (const Error& err) {
+        fail(err.code(), p + ".expr", err.what());
+      }
+      cp.generalForce.push_back({text, multiply(constant(coef), e)});
+      continue;
+    }
     std::vector<double> poly{1.0};
     if (t.contains("u")) {
       const json& u = t["u"];
@@ -90,12 +104,10 @@ std::vector<ForceTerm> parseForce(const json& j, const std::string& path, const 
       for (size_t d = 0; d < u.size(); ++d) poly.push_back(r.number(u[d], p + ".u[" + std::to_string(d) + "]"));
       t.erase("u");
     }
-    plain.push_back(t);
-    const VTerm term = r.terms(json::array({t}), path).front();
+    const VTerm term = r.term(t, p, false);
     for (double& c : poly) c *= term.coef;
-    out.push_back({term.g, poly});
+    cp.force.push_back({term.g, poly});
   }
-  return out;
 }
 
 }  // namespace
@@ -162,7 +174,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Pa
     const std::string fp = path + ".force";
     allowOnly(j["force"], fp, {"x", "y", "z"});
     for (int k = 0; k < 3; ++k)
-      if (j["force"].contains(kAxis[k])) patch.pde.component[k].force = parseForce(j["force"][kAxis[k]], fp + "." + kAxis[k], r);
+      if (j["force"].contains(kAxis[k])) parseForce(j["force"][kAxis[k]], fp + "." + kAxis[k], r, patch.pde.component[k]);
   }
 }
 
