@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "methods/method.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 
@@ -26,13 +27,13 @@ std::string readText(const std::string& path) {
   return s.str();
 }
 
-// Median over 15 samples of the time per call, each sample batching enough calls to last ~2 ms.
+// Median over 15 samples of the time per call, each sample batching enough calls to last ~1 ms.
 double medianSeconds(const std::function<void()>& f) {
   int batch = 1;
   for (;;) {
     const auto t0 = Clock::now();
     for (int i = 0; i < batch; ++i) f();
-    if (std::chrono::duration<double>(Clock::now() - t0).count() > 2e-3 || batch > (1 << 24)) break;
+    if (std::chrono::duration<double>(Clock::now() - t0).count() > 1e-3 || batch > (1 << 24)) break;
     batch *= 2;
   }
   std::vector<double> samples;
@@ -58,17 +59,31 @@ int main() {
   const std::string dir = PDESURF_EXAMPLES_DIR;
   const auto index = nlohmann::json::parse(readText(dir + "/index.json"));
   std::printf("pdesurf benchmark, %s\n\n", target);
-  std::printf("%-16s %12s %14s\n", "example", "solve [us]", "parse+solve [us]");
+  // Every example: parse+solve of the whole scene, then each applicable method on its blend.
+  std::printf("%-22s %10s %10s %12s %12s %12s %12s\n", "example", "scene [us]", "closed", "pseudo-nav.", "modal:16", "fourier:20", "auto");
   for (const auto& e : index["examples"]) {
     const std::string text = readText(dir + "/" + e["file"].get<std::string>());
-    const Scene scene = parseScene(text);
-    const double solve = medianSeconds([&] { sink = solveScene(scene).size(); });
     const double both = medianSeconds([&] { sink = solveScene(parseScene(text)).size(); });
-    std::printf("%-16s %12.2f %14.2f\n", e["id"].get<std::string>().c_str(), solve * 1e6, both * 1e6);
+    const Scene scene = parseScene(text);
+    const PdeProblem& p = scene.firstPde()->pde;
+    const auto applicable = applicableMethods(p);
+    std::printf("%-22s %10.1f", e["id"].get<std::string>().c_str(), both * 1e6);
+    for (const char* name : {"closed", "pseudo-navier", "modal:16", "fourier:20", "auto"}) {
+      const bool ok = std::find(applicable.begin(), applicable.end(), name) != applicable.end();
+      if (!ok) {
+        std::printf(" %12s", "-");
+        continue;
+      }
+      const Method m = parseMethod(name);
+      const double t = medianSeconds([&] { sink = solveWithMethod(p, m).surface.component[0].size(); });
+      std::printf(" %12.2f", t * 1e6);
+    }
+    std::printf("\n");
   }
+  std::printf("(solve times of the blend in microseconds, median)\n");
 
   const Scene scene = parseScene(readText(dir + "/you2004-fig4a.json"));
-  const SeparableSurface blend = solvePatch(*scene.firstPde());
+  const SeparableSurface blend = solvePatch(*scene.firstPde()).surface;
   std::printf("\ntessellation of you2004-fig4a's blend (positions, normals, uvs, indices)\n");
   std::printf("%-10s %14s %12s %14s %14s %10s\n", "grid", "new mesh [ms]", "reused [ms]", "Mvertices/s", "memcpy [ms]", "x memcpy");
   for (int n : {64, 256, 1024}) {

@@ -168,10 +168,15 @@ bool isPeriodic(const VExpansion& f, double v0, double v1) {
 }
 
 PdeProblem mapSlots(const PdeProblem& p, const std::function<VExpansion(const VExpansion&)>& map) {
+  static const char* axis[3] = {"x", "y", "z"};
   PdeProblem out = p;
-  for (auto& c : out.component) {
-    for (auto& slot : c.left) slot = map(slot);
-    for (auto& slot : c.right) slot = map(slot);
+  for (int c = 0; c < 3; ++c) {
+    try {
+      for (auto& slot : out.component[c].left) slot = map(slot);
+      for (auto& slot : out.component[c].right) slot = map(slot);
+    } catch (const Error& e) {
+      throw Error(e.code(), std::string("component ") + axis[c] + ": " + e.what());
+    }
   }
   return out;
 }

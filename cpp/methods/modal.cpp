@@ -29,10 +29,16 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
     out.insert(out.end(), approx.begin(), approx.end());
     return out;
   });
-  for (auto& c : q.component) {
+  static const char* axis[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    auto& c = q.component[k];
     for (const GeneralForce& f : c.generalForce) {
-      const auto terms = approximateForce(f, p.v0, p.v1, N);
-      c.force.insert(c.force.end(), terms.begin(), terms.end());
+      try {
+        const auto terms = approximateForce(f, p.v0, p.v1, N);
+        c.force.insert(c.force.end(), terms.begin(), terms.end());
+      } catch (const Error& e) {
+        throw Error(e.code(), std::string("component ") + axis[k] + ": force: " + e.what());
+      }
     }
     c.generalForce.clear();
   }

@@ -105,7 +105,8 @@ SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points
         const double vars[2] = {v, u};
         for (const GeneralForce& f : cp.generalForce) force += evaluate(*f.f, vars);
         if (!std::isfinite(known) || !std::isfinite(force))
-          throw Error(ErrorCode::NonFinite, "pseudo-navier: a general boundary function or force is not finite at (u, v) = (" +
+          throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] +
+                                                ": a general boundary function or force is not finite at (u, v) = (" +
                                                 std::to_string(u) + ", " + std::to_string(v) + ")");
         rhs(row) = force - known;  // minimise |L X - f| at the point
         for (int m = 1; m <= M; ++m)

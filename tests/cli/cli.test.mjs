@@ -79,3 +79,29 @@ test('errors go to stderr with exit code 1 and name the field', () => {
     assert.match(r.stderr, message);
   }
 });
+
+test('sample --method picks the solver; compare --json reports every applicable method', () => {
+  const fig1 = example('you2004-fig1');
+  const closed = parseCsv(run('sample', fig1, '--grid', '4x4', '--method', 'closed').stdout);
+  const navier = parseCsv(run('sample', fig1, '--grid', '4x4', '--method', 'pseudo-navier').stdout);
+  assert.equal(closed.length, navier.length);
+  const diff = Math.max(...closed.map((row, k) => Math.abs(row[2] - navier[k][2])));
+  assert.ok(diff > 1e-6 && diff < 1e-2, `pseudo-Navier differs a little from the closed form: ${diff}`);
+  const bad = run('sample', fig1, '--method', 'modal');
+  assert.equal(bad.status, 1);
+  assert.match(bad.stderr, /method 'modal' needs a number of terms/);
+
+  const r = run('compare', fig1, '--json');
+  assert.equal(r.status, 0, r.stderr);
+  const rows = JSON.parse(r.stdout);
+  const byName = Object.fromEntries(rows.map((row) => [row.method, row]));
+  for (const name of ['closed', 'pseudo-navier', 'modal:16', 'fourier:20', 'fourier:100', 'pseudo-spectral:2', 'pseudo-spectral:5', 'reference']) {
+    assert.ok(byName[name], `${name} present`);
+    for (const key of ['E', 'bc_error', 'solve_us']) assert.ok(Number.isFinite(byName[name][key]), `${name}.${key}`);
+  }
+  assert.equal(byName.closed.E, 0);
+  assert.ok(byName['pseudo-navier'].E <= 6.637916e-4);
+  assert.ok(Math.abs(byName['fourier:20'].E / 6.565263e-2 - 1) < 0.1);
+  const table = run('compare', fig1);
+  assert.match(table.stdout, /E over 100x100 points against the closed solution/);
+});

@@ -117,7 +117,7 @@ TEST_CASE("general methods: errors name the method option or the expression") {
   j["parameters"]["k1"]["value"] = 0.05;  // (r + k1)² - s² cos² v stays positive: fine
   CHECK(outcome(j.dump()) == "ok");
   j["patches"][0]["boundary"]["z"]["u0"][0][0]["expr"] = "sqrt(0.25 - cos(v)^2)";  // negative near v = 0
-  CHECK(outcome(j.dump()) == "NonFinite: patch 'blend': 'sqrt(0.25 - cos(v)^2)' is not finite at v = 0.000000");
+  CHECK(outcome(j.dump()) == "NonFinite: patch 'blend': component z: 'sqrt(0.25 - cos(v)^2)' is not finite at v = 0.000000");
   j["patches"][0]["boundary"]["z"]["u0"][0][0]["expr"] = "sqrt(2 - cos(w))";
   CHECK(outcome(j.dump()) == "UnknownName: patches[0].boundary.z.u0[0][0].expr: col 14: unknown parameter 'w'");
 }
@@ -141,4 +141,18 @@ TEST_CASE("general forces: an expression force matches the same force in closed 
   const double navier = relativeError(exact, solve(p, "pseudo-navier"), 40, 40);
   CHECK(navier < 0.25);
   CHECK(navier > 1e-3);
+}
+
+TEST_CASE("a resonant scene is a named error: patch, component, term") {
+  // s x_uu + t x_vv with t/s = -1 and cos(pi v): G'' + pi² G = 0 with G(0) = G(1) = 0 has sin(pi u).
+  const std::string scene = R"({"format": "pdesurf-scene", "version": 1, "patches": [{"name": "drum", "kind": "pde",
+    "operator": {"order": 2, "s": 1, "t": -1},
+    "boundary": {"x": {"u0": [[{"fn": "cos", "w": "pi"}]]}, "z": {"u1": [[{"fn": "poly", "coef": 1}]]}}}]})";
+  try {
+    solveScene(parseScene(scene));
+    FAIL("expected Singular");
+  } catch (const Error& e) {
+    CHECK(e.code() == ErrorCode::Singular);
+    CHECK(std::string(e.what()).rfind("patch 'drum': component x: term cos(3.14159*v): the boundary-value problem has no unique solution", 0) == 0);
+  }
 }
