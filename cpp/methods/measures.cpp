@@ -3,17 +3,18 @@
 #include <cmath>
 
 #include "methods/approximate.hpp"
+#include "surface/mesh.hpp"
 
 namespace pdesurf {
 
 double relativeError(const SeparableSurface& ref, const SeparableSurface& other, int Iu, int Jv) {
+  // The sample grid of tessellation is exactly u_i = i/(Iu-1), v_j = v0 + (v1-v0) j/(Jv-1).
+  const GridSamples a = sampleGrid(ref, Iu - 1, Jv - 1), b = sampleGrid(other, Iu - 1, Jv - 1);
   double sum = 0.0;
-  for (int i = 0; i < Iu; ++i)
-    for (int j = 0; j < Jv; ++j) {
-      const double u = ref.u0 + (ref.u1 - ref.u0) * i / (Iu - 1), v = ref.v0 + (ref.v1 - ref.v0) * j / (Jv - 1);
-      const Eigen::Vector3d a = evalPoint(ref, u, v), b = evalPoint(other, u, v);
-      sum += (a - b).norm() / a.norm();
-    }
+  for (size_t k = 0; k < a.X.size(); k += 3) {
+    const Eigen::Vector3d pa(a.X[k], a.X[k + 1], a.X[k + 2]), pb(b.X[k], b.X[k + 1], b.X[k + 2]);
+    sum += (pa - pb).norm() / pa.norm();
+  }
   return sum / (static_cast<double>(Iu) * Jv);
 }
 
