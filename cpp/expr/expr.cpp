@@ -1,6 +1,8 @@
 #include "expr/expr.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace pdesurf {
 
@@ -87,12 +89,12 @@ Expr call(ExprFn f, const Expr& a) {
 }
 
 const char* exprFnName(ExprFn f) {
-  static const char* names[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "abs"};
+  static const char* names[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "abs", "general"};
   return names[static_cast<int>(f)];
 }
 
 bool exprFnFromName(const std::string& name, ExprFn* out) {
-  for (int k = 0; k <= static_cast<int>(ExprFn::Abs); ++k)
+  for (int k = 0; k <= static_cast<int>(ExprFn::General); ++k)
     if (name == exprFnName(static_cast<ExprFn>(k))) {
       *out = static_cast<ExprFn>(k);
       return true;
@@ -115,6 +117,7 @@ double applyFn(ExprFn f, double x) {
     case ExprFn::Cosh: return std::cosh(x);
     case ExprFn::Tanh: return std::tanh(x);
     case ExprFn::Abs: return std::abs(x);
+    case ExprFn::General: return x;
   }
   return NAN;
 }
@@ -151,6 +154,55 @@ bool dependsOn(const Expr& e, ExprVar v) {
 }
 
 size_t nodeCount(const Expr& e) { return e ? 1 + nodeCount(e->a) + nodeCount(e->b) : 0; }
+
+namespace {
+
+// Precedence for printing: sum 1, product 2, unary minus 3, power 4, atoms 5.
+int precedence(const ExprNode& e) {
+  switch (e.op) {
+    case Op::Add:
+    case Op::Sub: return 1;
+    case Op::Mul:
+    case Op::Div: return 2;
+    case Op::Neg: return 3;
+    case Op::Pow: return 4;
+    case Op::Const: return e.value < 0 ? 3 : 5;
+    default: return 5;
+  }
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  // Prefer the shortest text that reads back to the same double.
+  for (int digits = 1; digits < 17; ++digits) {
+    char shorter[32];
+    std::snprintf(shorter, sizeof shorter, "%.*g", digits, x);
+    if (std::strtod(shorter, nullptr) == x) return shorter;
+  }
+  return buf;
+}
+
+}  // namespace
+
+std::string toText(const Expr& e, const char* vName, const char* uName) {
+  auto sub = [&](const Expr& x, int minPrec) {
+    const std::string t = toText(x, vName, uName);
+    return precedence(*x) < minPrec ? "(" + t + ")" : t;
+  };
+  switch (e->op) {
+    case Op::Const: return number(e->value);
+    case Op::Var: return e->var == ExprVar::V ? vName : uName;
+    case Op::Neg: return "-" + sub(e->a, 4);
+    case Op::Add: return sub(e->a, 1) + " + " + sub(e->b, 2);
+    case Op::Sub: return sub(e->a, 1) + " - " + sub(e->b, 2);
+    case Op::Mul: return sub(e->a, 2) + "*" + sub(e->b, 3);
+    case Op::Div: return sub(e->a, 2) + "/" + sub(e->b, 4);
+    case Op::Pow: return sub(e->a, 5) + "^" + sub(e->b, 4);
+    case Op::Call: return std::string(exprFnName(e->fn)) + "(" + toText(e->a, vName, uName) + ")";
+  }
+  return "?";
+}
 
 Expr substitute(const Expr& e, ExprVar var, double value) {
   if (!dependsOn(e, var)) return e;
@@ -203,6 +255,7 @@ Expr derivative(const Expr& e, ExprVar var) {
         case ExprFn::Cosh: outer = call(ExprFn::Sinh, a); break;
         case ExprFn::Tanh: outer = subtract(constant(1.0), multiply(e, e)); break;
         case ExprFn::Abs: outer = divide(a, e); break;  // sign(a); undefined at 0 like abs'
+        case ExprFn::General: return da;
       }
       return multiply(outer, da);
     }

@@ -8,8 +8,10 @@
 
 namespace pdesurf {
 
+// V is v; U is the other variable: u in forces, t in primary surfaces.
 enum class ExprVar { V = 0, U = 1 };
-enum class ExprFn { Sqrt, Exp, Log, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Abs };
+// General is the identity that keeps its argument out of the closed form (general(exp(v))).
+enum class ExprFn { Sqrt, Exp, Log, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Abs, General };
 
 struct ExprNode;
 using Expr = std::shared_ptr<const ExprNode>;
@@ -44,6 +46,8 @@ bool dependsOn(const Expr& e, ExprVar v);
 // d e / d var, simplified by the builders.
 Expr derivative(const Expr& e, ExprVar var);
 size_t nodeCount(const Expr& e);
+// Readable text with the fewest parentheses; varNames[0] for v, varNames[1] for the other.
+std::string toText(const Expr& e, const char* vName = "v", const char* uName = "u");
 // e with the variable replaced by a number (folded by the builders).
 Expr substitute(const Expr& e, ExprVar var, double value);
 

@@ -114,9 +114,12 @@ class Parser {
       if (name == "pi") return constant(M_PI);
       if (name == "e") return constant(M_E);
       if (name == "v" && allowed_.v) return variable(ExprVar::V);
-      if (name == "u" && allowed_.u) return variable(ExprVar::U);
+      if (allowed_.u && name == allowed_.uName) return variable(ExprVar::U);
       pos_ = start;
-      if (name == "v" || name == "u") fail("'" + name + "' cannot be used here: a number is expected", ErrorCode::UnknownName);
+      if (name == "v" || name == "u" || name == "t")
+        fail("'" + name + "' cannot be used here" + (allowed_.v ? std::string(": the variables are v") + (allowed_.u ? std::string(" and ") + allowed_.uName : "")
+                                                                : std::string(": a number is expected")),
+             ErrorCode::UnknownName);
       fail("unknown parameter '" + name + "'", ErrorCode::UnknownName);
     }
     if (c == ')') fail("unbalanced ')'");

@@ -18,6 +18,7 @@ constexpr int kMaxExpressionDepth = 64;
 
 struct AllowedVariables {
   bool v = false, u = false;
+  const char* uName = "u";  // the second variable's name: u in forces, t in primary surfaces
 };
 
 // Throws Error(ParseError | UnknownName | NonFinite).

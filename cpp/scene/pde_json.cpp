@@ -2,6 +2,7 @@
 // boundary conditions by derivative order, and forces.
 #include <cmath>
 
+#include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
 
@@ -112,7 +113,7 @@ void parseForce(const json& j, const std::string& path, const Resolver& r, Compo
 
 }  // namespace
 
-void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary", "force", "method"});
   if (j.contains("method")) {
     try {
@@ -165,16 +166,24 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Pa
       if (!list.is_array() || list.size() > static_cast<size_t>(n))
         fail(ErrorCode::InvalidField, lp,
              "an order-" + std::to_string(2 * n) + " operator takes at most " + std::to_string(n) + " conditions [" + expect + "]");
-      for (size_t i = 0; i < list.size(); ++i)
-        (end == 0 ? cp.left : cp.right)[i] = r.terms(list[i], lp + "[" + std::to_string(i) + "]");
+      for (size_t i = 0; i < list.size(); ++i) {
+        const std::string sp = lp + "[" + std::to_string(i) + "]";
+        VExpansion& slot = (end == 0 ? cp.left : cp.right)[i];
+        if (version >= 2) slot = slotExpression(list[i], sp, r);
+        else slot = r.terms(list[i], sp);
+      }
     }
   }
 
   if (j.contains("force")) {
     const std::string fp = path + ".force";
     allowOnly(j["force"], fp, {"x", "y", "z"});
-    for (int k = 0; k < 3; ++k)
-      if (j["force"].contains(kAxis[k])) parseForce(j["force"][kAxis[k]], fp + "." + kAxis[k], r, patch.pde.component[k]);
+    for (int k = 0; k < 3; ++k) {
+      if (!j["force"].contains(kAxis[k])) continue;
+      const std::string cp = fp + "." + kAxis[k];
+      if (version >= 2) forceExpression(j["force"][kAxis[k]], cp, r, patch.pde.component[k]);
+      else parseForce(j["force"][kAxis[k]], cp, r, patch.pde.component[k]);
+    }
   }
 }
 

@@ -13,7 +13,7 @@ namespace pdesurf {
 
 struct Parameter {
   std::string name, label;
-  double value = 0, min = 0, max = 0;
+  double value = 0, min = 0, max = 0, step = 0;  // step 0: not given
 };
 
 enum class PatchKind { Pde, Primary };
@@ -30,6 +30,7 @@ struct PrimaryTerm {
 struct PrimarySurface {
   double t0 = 0, t1 = 1, v0 = 0, v1 = 0;
   std::array<std::vector<PrimaryTerm>, 3> terms;
+  std::array<Expr, 3> pointwise;  // what does not separate (version-2 "surface" expressions)
 };
 
 // Where a primary surface meets a PDE patch: its t = t0 (or t1) curve is that patch's
@@ -60,6 +61,7 @@ struct Patch {
 };
 
 struct Scene {
+  int version = 2;  // of the file it was read from
   std::string title;
   std::vector<Parameter> parameters;
   std::vector<Patch> patches;

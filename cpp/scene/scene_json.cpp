@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 
+#include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
 
@@ -11,7 +12,7 @@ namespace pdesurf {
 using namespace scene_json;
 
 // In scene/pde_json.cpp.
-void parsePdePatch(const json& j, const std::string& path, const Resolver& r, Patch& patch);
+void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
 namespace {
 
@@ -37,7 +38,7 @@ void checkNesting(const std::string& text) {
   }
 }
 
-void parseParameters(const json& j, Scene& scene, Resolver& r) {
+void parseParameters(const json& j, Scene& scene, Resolver& r, int version) {
   if (!j.is_object()) fail(ErrorCode::InvalidField, "parameters", "expected an object of named parameters");
   // Values first so that ranges may refer to none but numbers; parameters are plain numbers.
   for (auto it = j.begin(); it != j.end(); ++it) {
@@ -46,9 +47,9 @@ void parseParameters(const json& j, Scene& scene, Resolver& r) {
     bool ident = !name.empty() && name.size() <= 32 && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
     for (char c : name) ident = ident && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
     if (!ident) fail(ErrorCode::InvalidField, path, "a parameter name is a letter or '_' followed by letters, digits or '_'");
-    if (name == "pi" || name == "e" || name == "v" || name == "u")
+    if (name == "pi" || name == "e" || name == "v" || name == "u" || (version >= 2 && name == "t"))
       fail(ErrorCode::InvalidField, path, "'" + name + "' is reserved");
-    allowOnly(it.value(), path, {"value", "min", "max", "label"});
+    allowOnly(it.value(), path, {"value", "min", "max", "step", "label"});
     Parameter p;
     p.name = name;
     auto num = [&](const char* key) {
@@ -65,6 +66,10 @@ void parseParameters(const json& j, Scene& scene, Resolver& r) {
     if (p.value < p.min || p.value > p.max)
       fail(ErrorCode::InvalidField, path + ".value", "outside [min, max] = [" + std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
     if (it.value().contains("label")) p.label = stringField(it.value()["label"], path + ".label");
+    if (it.value().contains("step")) {
+      p.step = num("step");
+      if (!(p.step > 0)) fail(ErrorCode::InvalidField, path + ".step", "must be positive");
+    }
     r.values[name] = p.value;
     scene.parameters.push_back(p);
   }
@@ -104,6 +109,16 @@ void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch
     for (const VTerm& t : curve[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 0}, t.g, t.coef});
     for (const VTerm& t : direction[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 1}, t.g, t.coef});
   }
+}
+
+// "surface" (version 2): per coordinate an expression in t and v.
+void parseSurface(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
+  parseMeets(j, path, patch);
+  primaryRanges(j, path, r, patch.primary);
+  for (int c = 0; c < 3; ++c)
+    if (j.contains(kAxis[c]))
+      surfaceExpression(j[kAxis[c]], path + "." + kAxis[c], r, patch.primary.terms[c], &patch.primary.pointwise[c]);
 }
 
 // "separable": per coordinate, terms with an optional factor "t": {fn, w, n} of t.
@@ -162,10 +177,11 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (!format.is_string() || format.get<std::string>() != "pdesurf-scene")
     fail(ErrorCode::InvalidField, "format", "expected \"pdesurf-scene\"");
   const json& version = require(doc, "version", "scene");
-  if (!version.is_number_integer() || version.get<long long>() != 1)
-    fail(ErrorCode::InvalidField, "version", "this build reads scene version 1");
+  if (!version.is_number_integer() || (version.get<long long>() != 1 && version.get<long long>() != 2))
+    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 and 2");
   allowOnly(doc, "scene", {"format", "version", "id", "title", "description", "source", "parameters", "patches"});
   Scene scene;
+  scene.version = version.get<int>();
   if (doc.contains("title")) scene.title = stringField(doc["title"], "title");
   if (doc.contains("id")) stringField(doc["id"], "id", 64);
   if (doc.contains("description")) stringField(doc["description"], "description", 2000);
@@ -174,7 +190,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     for (auto it = doc["source"].begin(); it != doc["source"].end(); ++it) stringField(it.value(), "source." + it.key(), 500);
   }
   Resolver r;
-  if (doc.contains("parameters")) parseParameters(doc["parameters"], scene, r);
+  if (doc.contains("parameters")) parseParameters(doc["parameters"], scene, r, scene.version);
   const json& patches = require(doc, "patches", "scene");
   if (!patches.is_array() || patches.empty()) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array");
   if (patches.size() > kMaxPatches) fail(ErrorCode::InvalidField, "patches", "more than " + std::to_string(kMaxPatches) + " patches");
@@ -191,15 +207,19 @@ static Scene parseSceneUnchecked(const std::string& text) {
     patch.kindName = kind;
     if (kind == "pde") {
       patch.kind = PatchKind::Pde;
-      parsePdePatch(pj, path, r, patch);
+      parsePdePatch(pj, path, r, scene.version, patch);
     } else if (kind == "ruled") {
       patch.kind = PatchKind::Primary;
       parseRuled(pj, path, r, patch);
     } else if (kind == "separable") {
       patch.kind = PatchKind::Primary;
       parseSeparable(pj, path, r, patch);
+    } else if (kind == "surface" && scene.version >= 2) {
+      patch.kind = PatchKind::Primary;
+      parseSurface(pj, path, r, patch);
     } else {
-      fail(ErrorCode::InvalidField, path + ".kind", "unknown kind '" + kind + "' (pde, ruled, separable)");
+      fail(ErrorCode::InvalidField, path + ".kind",
+           "unknown kind '" + kind + "' (" + (scene.version >= 2 ? "pde, surface, ruled, separable" : "pde, ruled, separable") + ")");
     }
     scene.patches.push_back(std::move(patch));
   }

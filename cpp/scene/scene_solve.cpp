@@ -55,6 +55,7 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
   s.v1 = p.v1;
   for (int c = 0; c < 3; ++c)
     for (const PrimaryTerm& t : p.terms[c]) s.component[c].push_back({t.v, tFactor(t.t, t.coef)});
+  s.pointwise = p.pointwise;
   return s;
 }
 

@@ -5,6 +5,13 @@ namespace pdesurf {
 double evalComponent(const SeparableSurface& s, int c, double u, double v, int du, int dv) {
   double sum = 0.0;
   for (const SeparableTerm& t : s.component[c]) sum += t.G.eval(u, du) * t.g.eval(v, dv);
+  if (s.pointwise[c]) {
+    Expr d = s.pointwise[c];
+    for (int k = 0; k < du; ++k) d = derivative(d, ExprVar::U);
+    for (int k = 0; k < dv; ++k) d = derivative(d, ExprVar::V);
+    const double vars[2] = {v, u};
+    sum += evaluate(*d, vars);
+  }
   return sum;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "basis/vfunction.hpp"
+#include "expr/expr.hpp"
 #include "ode/u_factor.hpp"
 
 namespace pdesurf {
@@ -20,6 +21,9 @@ struct SeparableSurface {
   double u0 = 0.0, u1 = 1.0;  // u-range (t-range for ruled surfaces)
   double v0 = 0.0, v1 = 0.0;
   std::array<std::vector<SeparableTerm>, 3> component;  // x, y, z
+  // Parts of a primary surface that do not separate (an expression in u and v, evaluated
+  // point by point); nullptr when none. PDE solutions never have them.
+  std::array<Expr, 3> pointwise;
 };
 
 // ∂^{du+dv} X_c / ∂u^du ∂v^dv at (u, v) for component c (0, 1, 2).

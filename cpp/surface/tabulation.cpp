@@ -43,6 +43,9 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
       if (!std::isfinite(x))
         throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": a v-basis function overflows on the v-range");
   }
+  for (int c = 0; c < 3; ++c)
+    if (s.pointwise[c])
+      t.pointwise[c] = {s.pointwise[c], derivative(s.pointwise[c], ExprVar::U), derivative(s.pointwise[c], ExprVar::V)};
   return t;
 }
 

@@ -17,6 +17,8 @@ struct Tabulation {
   // vTab[c][j * 2T + 2t + k] = g_t^{(k)}(v_j).
   std::array<int, 3> terms{};
   std::array<std::vector<double>, 3> uTab, vTab;
+  // Non-separable primary parts: value, ∂/∂u, ∂/∂v expressions per component (or nullptr).
+  std::array<std::array<Expr, 3>, 3> pointwise;
 };
 
 // Throws Error(GridSize) outside 1..2048 per direction, Error(NonFinite) when a factor is not

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/errors.hpp"
 #include "surface/tabulation.hpp"
 
 namespace pdesurf {
@@ -38,6 +39,19 @@ void combineRows(const Tabulation& t, EmitRow&& emitRow) {
           xu[i] += dG[i] * g;
           xv[i] += G[i] * dg;
         }
+      }
+    }
+    for (int c = 0; c < 3; ++c) {  // rare: surfaces typed as non-separable expressions
+      const auto& pw = t.pointwise[c];
+      if (!pw[0]) continue;
+      for (size_t i = 0; i < m; ++i) {
+        const double vars[2] = {t.v[j], t.u[i]};
+        row.X[c][i] += evaluate(*pw[0], vars);
+        row.Xu[c][i] += evaluate(*pw[1], vars);
+        row.Xv[c][i] += evaluate(*pw[2], vars);
+        if (!std::isfinite(row.X[c][i]) || !std::isfinite(row.Xu[c][i]) || !std::isfinite(row.Xv[c][i]))
+          throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
+                                                std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) + ")");
       }
     }
     emitRow(j, row);

@@ -67,8 +67,8 @@ test('errors go to stderr with exit code 1 and name the field', () => {
     [['frobnicate'], /unknown command/],
   ];
   const bad = join(dir, 'bad.json');
-  writeFileSync(bad, readFileSync(example('you2004-fig2a'), 'utf8').replace('"coef": "r0p"', '"coef": "r0q"'));
-  cases.push([['sample', bad], /patches\[0\]\.boundary\.x\.u0\[1\]\[0\]\.coef: col 1: unknown parameter 'r0q'/]);
+  writeFileSync(bad, readFileSync(example('you2004-fig2a'), 'utf8').replace('"r0p*cos(v)"', '"r0q*cos(v)"'));
+  cases.push([['sample', bad], /patches\[0\]\.boundary\.x\.u0\[1\]: col 1: unknown parameter 'r0q'/]);
   const zeroB = join(dir, 'zero-b.json');
   writeFileSync(zeroB, readFileSync(example('you2004-fig2a'), 'utf8').replace('"b": 1,', '"b": [1, 1, 0],'));
   cases.push([['sample', zeroB], /DegenerateOperator: patches\[0\]\.operator\.b\[2\]/]);

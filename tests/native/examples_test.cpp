@@ -118,3 +118,24 @@ TEST_CASE("tessellation: a pole row (cone apex, X_v = 0) gets its neighbours' un
   CHECK(m.indices == fresh.indices);
   CHECK(m.uvs == fresh.uvs);
 }
+
+TEST_CASE("examples: each version-2 file draws exactly what its version-1 original drew") {
+  const auto index = nlohmann::json::parse(readText(examplePath("index.json")));
+  for (const auto& entry : index["examples"]) {
+    const std::string id = entry["id"];
+    CAPTURE(id);
+    const Scene v2 = parseScene(readText(examplePath(entry["file"])));
+    const Scene v1 = parseScene(readText(v1FixturePath(entry["file"])));
+    REQUIRE(v2.version == 2);
+    REQUIRE(v1.version == 1);
+    const auto a = solveScene(v2), b = solveScene(v1);
+    REQUIRE(a.size() == b.size());
+    for (size_t k = 0; k < a.size(); ++k) {
+      const GridSamples ga = sampleGrid(a[k].surface, 12, 20), gb = sampleGrid(b[k].surface, 12, 20);
+      double worst = 0.0;
+      for (size_t i = 0; i < ga.X.size(); ++i) worst = std::max(worst, std::abs(ga.X[i] - gb.X[i]) / std::max(1.0, std::abs(gb.X[i])));
+      CAPTURE(a[k].patch->name);
+      CHECK(worst < 1e-9);
+    }
+  }
+}

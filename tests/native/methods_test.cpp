@@ -68,14 +68,14 @@ TEST_CASE("modal: the error falls steadily as terms are added") {
 }
 
 TEST_CASE("reference: equals the closed form when family terms are marked general") {
-  // Periodic data: the cone of Fig. 2a with every term marked "general".
+  // Periodic data: the cone of Fig. 2a with every boundary function wrapped in general(...).
   auto j = nlohmann::json::parse(readText(examplePath("you2004-fig2a.json")));
   for (auto& comp : j["patches"][0]["boundary"])
     for (auto& side : comp)
-      for (auto& slot : side)
-        for (auto& term : slot) term["general"] = true;
+      for (auto& slot : side) slot = "general(" + slot.get<std::string>() + ")";
   const Scene scene = parseScene(j.dump());
   const PdeProblem& p = scene.firstPde()->pde;
+  REQUIRE(hasGeneralTerms(p));
   PdeProblem restored;
   REQUIRE(restoreFamilies(p, &restored));
   const SeparableSurface closed = solve(p, "closed");
@@ -116,17 +116,17 @@ TEST_CASE("general methods: errors name the method option or the expression") {
   j["patches"][0].erase("method");
   j["parameters"]["k1"]["value"] = 0.05;  // (r + k1)² - s² cos² v stays positive: fine
   CHECK(outcome(j.dump()) == "ok");
-  j["patches"][0]["boundary"]["z"]["u0"][0][0]["expr"] = "sqrt(0.25 - cos(v)^2)";  // negative near v = 0
+  j["patches"][0]["boundary"]["z"]["u0"][0] = "sqrt(0.25 - cos(v)^2)";  // negative near v = 0
   CHECK(outcome(j.dump()) == "NonFinite: patch 'blend': component z: 'sqrt(0.25 - cos(v)^2)' is not finite at v = 0.000000");
-  j["patches"][0]["boundary"]["z"]["u0"][0][0]["expr"] = "sqrt(2 - cos(w))";
-  CHECK(outcome(j.dump()) == "UnknownName: patches[0].boundary.z.u0[0][0].expr: col 14: unknown parameter 'w'");
+  j["patches"][0]["boundary"]["z"]["u0"][0] = "sqrt(2 - cos(w))";
+  CHECK(outcome(j.dump()) == "UnknownName: patches[0].boundary.z.u0[0]: col 14: unknown parameter 'w'");
 }
 
 TEST_CASE("general forces: an expression force matches the same force in closed form") {
   auto j = nlohmann::json::parse(readText(examplePath("you2004-fig3d.json")));
   const Scene closedScene = parseScene(j.dump());
-  j["patches"][0]["force"]["x"] = nlohmann::json::array({{{"fn", "expr"}, {"expr", "p0*(1 + eta*u^2)*cos(v)"}}});
-  j["patches"][0]["force"]["y"] = nlohmann::json::array({{{"fn", "expr"}, {"expr", "p0*(1 + eta*u^2)*sin(v)"}}});
+  j["patches"][0]["force"]["x"] = "general(p0*(1 + eta*u^2)*cos(v))";
+  j["patches"][0]["force"]["y"] = "general(p0*(1 + eta*u^2)*sin(v))";
   const Scene generalScene = parseScene(j.dump());
   const PdeProblem& p = generalScene.firstPde()->pde;
   const SeparableSurface exact = solve(closedScene.firstPde()->pde, "closed");

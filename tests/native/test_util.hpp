@@ -17,6 +17,8 @@ inline std::string readText(const std::string& path) {
 }
 
 inline std::string examplePath(const std::string& file) { return std::string(PDESURF_EXAMPLES_DIR) + "/" + file; }
+// Version-1 copies of the examples, kept so the version-1 reader stays tested forever.
+inline std::string v1FixturePath(const std::string& file) { return std::string(PDESURF_FIXTURES_DIR) + "/v1/" + file; }
 
 inline double expansionAt(const VExpansion& e, double v, double* scale = nullptr) {
   double s = 0.0, mag = 0.0;

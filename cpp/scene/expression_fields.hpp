@@ -1,0 +1,23 @@
+// Scene version 2: boundary functions, forces and primary surfaces written as expressions,
+// split into closed-form terms and general remainders (expr/split.hpp).
+#pragma once
+#include <string>
+
+#include "pde/pde_problem.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf::scene_json {
+
+// An expression in v: family terms, plus one general term for what does not split (its text
+// is the user's, for error messages). c·general(f) with f one family function keeps f as its
+// origin, so the closed form stays available to measure the general methods against.
+VExpansion slotExpression(const json& j, const std::string& path, const Resolver& r);
+
+// An expression in u and v: (polynomial in u) × family terms, and a general force.
+void forceExpression(const json& j, const std::string& path, const Resolver& r, ComponentProblem& cp);
+
+// An expression in t and v for one coordinate of a primary surface.
+void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise);
+
+}  // namespace pdesurf::scene_json
