@@ -12,6 +12,8 @@ const char* kUsage =
     "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]                   write every patch as OBJ\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
+    "  pdesurf encode-link SCENE.json [--grid NUxNV]                          print the shareable link's fragment\n"
+    "  pdesurf decode-link 'URL-or-fragment'                                  print the scene of a shared link\n"
     "  methods: auto, closed, pseudo-navier[:M,N,L], modal:N, fourier:N, pseudo-spectral:N, reference\n";
 
 namespace {
@@ -34,7 +36,8 @@ Options parseArgs(const std::vector<std::string>& args) {
   if (args.empty()) throw std::runtime_error("missing command");
   Options o;
   o.command = args[0];
-  if (o.command != "sample" && o.command != "export" && o.command != "compare")
+  if (o.command != "sample" && o.command != "export" && o.command != "compare" && o.command != "encode-link" &&
+      o.command != "decode-link")
     throw std::runtime_error("unknown command '" + o.command + "'");
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -47,11 +50,11 @@ Options parseArgs(const std::vector<std::string>& args) {
     else if (a == "--method") o.method = value();
     else if (a == "--json") o.json = true;
     else if (a == "-o" || a == "--output") o.output = value();
-    else if (!a.empty() && a[0] == '-') throw std::runtime_error("unknown option '" + a + "'");
+    else if (!a.empty() && a[0] == '-' && o.command != "decode-link") throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;
     else throw std::runtime_error("unexpected argument '" + a + "'");
   }
-  if (o.scenePath.empty()) throw std::runtime_error("missing SCENE.json");
+  if (o.scenePath.empty()) throw std::runtime_error(o.command == "decode-link" ? "missing the link" : "missing SCENE.json");
   if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE.obj");
   return o;
 }

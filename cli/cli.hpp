@@ -19,6 +19,8 @@ std::string readFile(const std::string& path);
 int runSample(const Options& o, std::ostream& out);
 int runExport(const Options& o);
 int runCompare(const Options& o, std::ostream& out);
+int runEncodeLink(const Options& o, std::ostream& out);
+int runDecodeLink(const Options& o, std::ostream& out);
 
 extern const char* kUsage;
 

@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   try {
     if (o.command == "sample") return runSample(o, std::cout);
     if (o.command == "compare") return runCompare(o, std::cout);
+    if (o.command == "encode-link") return runEncodeLink(o, std::cout);
+    if (o.command == "decode-link") return runDecodeLink(o, std::cout);
     return runExport(o);
   } catch (const pdesurf::Error& e) {
     std::cerr << "pdesurf: " << o.scenePath << ": " << pdesurf::errorCodeName(e.code()) << ": " << e.what() << "\n";

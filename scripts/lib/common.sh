@@ -5,7 +5,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD="${PDESURF_BUILD_DIR:-$ROOT/build}"
 export NODE_PATH=/usr/share/nodejs  # emscripten's optimiser needs Debian's acorn (toolchain note 1)
 
-APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev chromium nodejs)
+APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev zlib1g-dev chromium nodejs)
 
 log() { printf '\033[1m== %s\033[0m\n' "$*"; }
 

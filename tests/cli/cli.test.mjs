@@ -105,3 +105,48 @@ test('sample --method picks the solver; compare --json reports every applicable 
   const table = run('compare', fig1);
   assert.match(table.stdout, /E over 100x100 points against the closed solution/);
 });
+
+test('encode-link then decode-link gives bit-identical samples for every example', () => {
+  const index = JSON.parse(readFileSync(join(root, 'examples/index.json'), 'utf8'));
+  const dir = mkdtempSync(join(tmpdir(), 'pdesurf-link-'));
+  for (const { id, file } of index.examples) {
+    const enc = run('encode-link', join(root, 'examples', file));
+    assert.equal(enc.status, 0, enc.stderr);
+    const fragment = enc.stdout.trim();
+    assert.match(fragment, /^s=1\.[A-Za-z0-9_-]+$/);
+    const dec = run('decode-link', `http://localhost:8000/web/#${fragment}`);
+    assert.equal(dec.status, 0, dec.stderr);
+    const decoded = join(dir, `${id}.json`);
+    writeFileSync(decoded, dec.stdout);
+    const a = run('sample', join(root, 'examples', file), '--grid', '7x9');
+    const b = run('sample', decoded, '--grid', '7x9');
+    assert.equal(a.status, 0);
+    assert.equal(b.stdout, a.stdout, `${id}: samples differ after the link round trip`);
+  }
+});
+
+test('decode-link refuses hostile links by name, quickly', async () => {
+  const { deflateRawSync } = await import('node:zlib');
+  const b64url = (buf) => buf.toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  const bomb = 's=1.' + b64url(deflateRawSync(Buffer.alloc(50 * 1024 * 1024, 32), { level: 9 }));
+  const notJson = 's=1.' + b64url(deflateRawSync(Buffer.from('hello')));
+  const noScene = 's=1.' + b64url(deflateRawSync(Buffer.from('{"grid": {"nu": 4}}')));
+  const badScene = 's=1.' + b64url(deflateRawSync(Buffer.from('{"scene": {"format": "pdesurf-scene", "version": 2, "patches": []}}')));
+  const cases = [
+    ['s=9.AAAA', /unknown link version '9'/],
+    ['s=1.ab$d', /bad base64/],
+    ['s=1.' + run('encode-link', example('you2004-fig2a')).stdout.trim().slice(4, 40), /truncated/],
+    [bomb, /inflates to more than 1048576 bytes/],
+    [notJson, /not JSON/],
+    [noScene, /holds no scene/],
+    [badScene, /patches: expected a non-empty array/],
+    ['#example=you2004-fig2a', /not a pdesurf link/],
+  ];
+  for (const [link, message] of cases) {
+    const t0 = Date.now();
+    const r = run('decode-link', link);
+    assert.equal(r.status, 1, `${link.slice(0, 30)}: exit ${r.status}`);
+    assert.match(r.stderr, message);
+    assert.ok(Date.now() - t0 < 2000, 'fails fast');
+  }
+});
