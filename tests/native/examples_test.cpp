@@ -36,6 +36,18 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
     REQUIRE(nlohmann::json::parse(text)["id"] == id);
     const Scene scene = parseScene(text);
     const auto solved = solveScene(scene);
+    // The stored bounding box (index.json, 32×32 samples of every patch, 12 digits).
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+    for (const SolvedPatch& sp : solved) {
+      const GridSamples g = sampleGrid(sp.surface, 32, 32);
+      for (size_t k = 0; k < g.X.size(); k += 3)
+        for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], g.X[k + c]), hi[c] = std::max(hi[c], g.X[k + c]);
+    }
+    REQUIRE(entry.contains("bounds"));
+    for (int c = 0; c < 3; ++c) {
+      CHECK(lo[c] == doctest::Approx(entry["bounds"]["min"][c].get<double>()).epsilon(1e-10).scale(1.0));
+      CHECK(hi[c] == doctest::Approx(entry["bounds"]["max"][c].get<double>()).epsilon(1e-10).scale(1.0));
+    }
     for (const SolvedPatch& sp : solved) {
       CAPTURE(sp.patch->name);
       if (sp.patch->kind == PatchKind::Pde) {
