@@ -201,6 +201,10 @@ Reduced reduceWaves(const std::vector<Wave>& waves) {
       }
     }
     trig.swap(next);
+    if (trig.size() > 1024) {  // a pathological power of sums: leave it to the general methods
+      r.ok = false;
+      return r;
+    }
   }
   if (hasExp && hasTrig) {
     r.ok = false;

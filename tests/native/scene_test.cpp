@@ -111,3 +111,46 @@ TEST_CASE("two-point problems without a unique solution are reported, not solved
   // Slightly off resonance the problem is fine.
   CHECK_NOTHROW(EvenOdeBasis({1.0, -1.0}, -M_PI * M_PI * 1.1));
 }
+
+TEST_CASE("version-2 expressions: a corpus of bad ones, each with its field, column and cause") {
+  const json base = json::parse(readText(examplePath("you2004-fig2a.json")));
+  auto withSlot = [&](const std::string& text) {
+    json j = base;
+    j["patches"][0]["boundary"]["x"]["u0"][1] = text;
+    return outcomeOf(j);
+  };
+  const std::string at = "patches[0].boundary.x.u0[1]: ";
+  CHECK(withSlot("r0p*cso(v)") == "UnknownName: " + at + "col 5: unknown function 'cso'");
+  CHECK(withSlot("r9*cos(v)") == "UnknownName: " + at + "col 1: unknown parameter 'r9'");
+  CHECK(withSlot("(r0p*cos(v)") == "ParseError: " + at + "col 12: unbalanced '(': missing ')'");
+  CHECK(withSlot("r0p*cos(v))") == "ParseError: " + at + "col 11: unbalanced ')'");
+  CHECK(withSlot("r0p*cos(u)") == "UnknownName: " + at + "col 9: 'u' cannot be used here: the variables are v");
+  CHECK(withSlot("r0p*t") == "UnknownName: " + at + "col 5: 't' cannot be used here: the variables are v");
+  CHECK(withSlot("r0p**cos(v)") == "ParseError: " + at + "col 5: unexpected '*'");
+  CHECK(withSlot("1/0") == "NonFinite: " + at + "expression '1/0' is not finite");
+  CHECK(withSlot(std::string(1001, 'v')).find("longer than 1000 characters") != std::string::npos);
+  CHECK(withSlot(std::string(100, '(') + "v" + std::string(100, ')')).find("nested too deeply") != std::string::npos);
+  json j = base;
+  j["patches"][0]["boundary"]["x"]["u0"][1] = 7;  // a plain number is an expression too
+  CHECK(outcomeOf(j) == "ok");
+  j["patches"][0]["boundary"]["x"]["u0"][1] = json::array({1});
+  CHECK(outcomeOf(j) == "InvalidField: " + at + "expected a string");
+  j = base;
+  j["parameters"]["t"] = {{"value", 1}, {"min", 0}, {"max", 2}};
+  CHECK(outcomeOf(j) == "InvalidField: parameters.t: 't' is reserved");
+  j = base;
+  j["patches"][1]["x"] = "r0*cos(v) + t*sqrt(-1 - t)";  // finite nowhere on the surface
+  CHECK(outcomeOf(j).rfind("NonFinite: component x: the surface is not finite at (t, v) = (0.000000, 0.000000)", 0) == 0);
+}
+
+TEST_CASE("version-2 expressions: a corpus of good ones solves") {
+  const json base = json::parse(readText(examplePath("you2004-fig2a.json")));
+  for (const char* text : {"r0p*cos(v)", "r0p*cos(v + 0)", "r0p*(cos(v)^2 + sin(v)^2)*cos(v)", "-0.5*cos(v) + 0*sin(3*v)",
+                           "r0p*cos(v) + 0.01*sqrt(2 + cos(v))", "r0p*cos(-v)", "r0p/2*cos(v)*2", "general(r0p*cos(v))",
+                           "r0p*cos(v) + 1e-3*v^2", "r0p*cos(v) + 0.001*exp(sin(v))"}) {
+    json j = base;
+    j["patches"][0]["boundary"]["x"]["u0"][1] = text;
+    CAPTURE(text);
+    CHECK(outcomeOf(j) == "ok");
+  }
+}
