@@ -1,0 +1,226 @@
+#include "bezier/bezier_solver.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "bezier/bernstein.hpp"
+#include "common/errors.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// Rows: evaluation points; columns: control points (i, j) -> i*(m+1)+j. Entries
+// ∂^{du+dv}/∂u^du ∂v^dv (B_i^n(u) B_j^m(v)).
+MatrixXd basisRows(int n, int m, const std::vector<double>& us, const std::vector<double>& vs, int du, int dv) {
+  MatrixXd A(us.size(), (n + 1) * (m + 1));
+  for (size_t q = 0; q < us.size(); ++q) {
+    const auto bu = bernstein(n, us[q], du), bv = bernstein(m, vs[q], dv);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= m; ++j) A(q, i * (m + 1) + j) = bu[i] * bv[j];
+  }
+  return A;
+}
+
+// Tensor quadrature nodes: continuous (Gauss) or the discrete sample grid, with weights.
+struct Points {
+  std::vector<double> u, v, w;
+};
+
+Points gaussGrid(int qu, int qv) {
+  const GaussRule a = gaussLegendre(qu), b = gaussLegendre(qv);
+  Points p;
+  for (int i = 0; i < qu; ++i)
+    for (int j = 0; j < qv; ++j) p.u.push_back(a.x[i]), p.v.push_back(b.x[j]), p.w.push_back(a.w[i] * b.w[j]);
+  return p;
+}
+
+Points sampleGrid(int np, int mp) {
+  Points p;
+  for (int i = 0; i <= np; ++i)
+    for (int j = 0; j <= mp; ++j) p.u.push_back(static_cast<double>(i) / np), p.v.push_back(static_cast<double>(j) / mp), p.w.push_back(1.0);
+  return p;
+}
+
+// Σ_q w_q a_q a_qᵀ for the rows a_q of A.
+MatrixXd gram(const MatrixXd& A, const VectorXd& w) { return A.transpose() * w.asDiagonal() * A; }
+
+void addBlockDiagonal(MatrixXd& Q, const MatrixXd& S, double scale) {
+  for (int k = 0; k < S.rows(); ++k)
+    for (int l = 0; l < S.cols(); ++l)
+      for (int c = 0; c < 3; ++c) Q(3 * k + c, 3 * l + c) += scale * S(k, l);
+}
+
+void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
+  if (!p.allFinite()) throw Error(ErrorCode::NonFinite, what + " is not finite");
+}
+
+}  // namespace
+
+void validateBezierProblem(const BezierProblem& p) {
+  const bool thin = p.energy == BezierEnergy::ThinPlate;
+  const int need = thin ? 4 : 2;
+  if (p.n < need || p.m < need)
+    throw Error(ErrorCode::InvalidField, std::string("degree ") + std::to_string(p.n) + "x" + std::to_string(p.m) + " leaves no free control point: the " +
+                                             (thin ? "thin-plate energy fixes two rings and needs degree 4x4 or more"
+                                                   : "membrane energy fixes one ring and needs degree 2x2 or more"));
+  if (p.n > 24 || p.m > 24) throw Error(ErrorCode::InvalidField, "degree above 24x24");
+  if (static_cast<int>(p.initial.size()) != (p.n + 1) * (p.m + 1))
+    throw Error(ErrorCode::InvalidField, "the control net needs " + std::to_string((p.n + 1) * (p.m + 1)) + " points");
+  for (size_t k = 0; k < p.initial.size(); ++k) requireFinite(p.initial[k], "control point " + std::to_string(k));
+  if (!std::isfinite(p.lambda) || p.lambda < 0) throw Error(ErrorCode::InvalidField, "lambda must be a finite number >= 0");
+  if (!std::isfinite(p.gamma) || p.gamma < 0) throw Error(ErrorCode::InvalidField, "gamma must be a finite number >= 0");
+  const BezierNormalField& f = p.normals;
+  const size_t count = f.discrete ? static_cast<size_t>(f.np + 1) * (f.mp + 1) : static_cast<size_t>(f.n1 + 1) * (f.m1 + 1);
+  if (f.discrete && (f.np < 1 || f.mp < 1 || f.np > 256 || f.mp > 256))
+    throw Error(ErrorCode::InvalidField, "the normal sample grid must be 1x1 .. 256x256");
+  if (!f.discrete && (f.n1 < 0 || f.m1 < 0 || f.n1 > 24 || f.m1 > 24))
+    throw Error(ErrorCode::InvalidField, "the normal field's degree must be 0x0 .. 24x24");
+  if (f.vectors.size() != count) throw Error(ErrorCode::InvalidField, "the normal field needs " + std::to_string(count) + " vectors");
+  for (size_t k = 0; k < f.vectors.size(); ++k) {
+    requireFinite(f.vectors[k], "normal " + std::to_string(k));
+    if (f.vectors[k].norm() < 1e-12) throw Error(ErrorCode::InvalidField, "normal " + std::to_string(k) + " has zero length");
+  }
+  for (const auto* w : {&f.lambdaWeight, &f.gammaWeight}) {
+    if (!w->empty() && w->size() != count) throw Error(ErrorCode::InvalidField, "per-sample weights need " + std::to_string(count) + " values");
+    for (double x : *w)
+      if (!std::isfinite(x) || x < 0) throw Error(ErrorCode::InvalidField, "per-sample weights must be finite and >= 0");
+  }
+}
+
+BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
+  validateBezierProblem(shape_);
+  const int n = shape_.n, m = shape_.m, K = (n + 1) * (m + 1);
+  const BezierNormalField& f = shape_.normals;
+  const bool thin = shape_.energy == BezierEnergy::ThinPlate;
+
+  // Where the energy is evaluated: Gauss nodes exact for the fairness and mass terms, and
+  // for the normal term (continuous), or the sample grid (discrete).
+  const Points fair = f.discrete ? sampleGrid(f.np, f.mp) : gaussGrid(n + 1, m + 1);
+  const Points nrm = f.discrete ? fair : gaussGrid(n + f.n1, m + f.m1);
+  const VectorXd wFair = Eigen::Map<const VectorXd>(fair.w.data(), fair.w.size());
+
+  MatrixXd F;  // fairness, K×K
+  if (thin) {
+    F = gram(basisRows(n, m, fair.u, fair.v, 2, 0), wFair) + 2 * gram(basisRows(n, m, fair.u, fair.v, 1, 1), wFair) +
+        gram(basisRows(n, m, fair.u, fair.v, 0, 2), wFair);
+  } else {
+    F = gram(basisRows(n, m, fair.u, fair.v, 1, 0), wFair) + gram(basisRows(n, m, fair.u, fair.v, 0, 1), wFair);
+  }
+  VectorXd wMass = wFair;
+  if (f.discrete && !f.gammaWeight.empty())
+    for (int q = 0; q < wMass.size(); ++q) wMass(q) *= f.gammaWeight[q];
+  const MatrixXd mass = gram(basisRows(n, m, fair.u, fair.v, 0, 0), wMass);
+
+  // Normal term with λ = 1: Σ_q w_q N_c N_d (a_u a_uᵀ + a_v a_vᵀ) per coordinate pair (c, d).
+  const MatrixXd Au = basisRows(n, m, nrm.u, nrm.v, 1, 0), Av = basisRows(n, m, nrm.u, nrm.v, 0, 1);
+  std::vector<Eigen::Vector3d> N(nrm.u.size());
+  for (size_t q = 0; q < nrm.u.size(); ++q) {
+    if (f.discrete) {
+      N[q] = f.vectors[q].normalized();
+      if (!f.lambdaWeight.empty()) N[q] *= std::sqrt(f.lambdaWeight[q]);
+    } else {
+      const auto bu = bernstein(f.n1, nrm.u[q]), bv = bernstein(f.m1, nrm.v[q]);
+      N[q].setZero();
+      for (int i = 0; i <= f.n1; ++i)
+        for (int j = 0; j <= f.m1; ++j) N[q] += bu[i] * bv[j] * f.vectors[i * (f.m1 + 1) + j];
+    }
+  }
+  normal_ = MatrixXd::Zero(3 * K, 3 * K);
+  for (int c = 0; c < 3; ++c)
+    for (int d = c; d < 3; ++d) {
+      VectorXd w(nrm.u.size());
+      for (size_t q = 0; q < nrm.u.size(); ++q) w(q) = nrm.w[q] * N[q](c) * N[q](d);
+      const MatrixXd block = gram(Au, w) + gram(Av, w);
+      for (int k = 0; k < K; ++k)
+        for (int l = 0; l < K; ++l) {
+          normal_(3 * k + c, 3 * l + d) = block(k, l);
+          normal_(3 * k + d, 3 * l + c) = block(k, l);
+        }
+    }
+
+  Q_ = shape_.lambda * normal_;
+  addBlockDiagonal(Q_, F, 1.0);
+  addBlockDiagonal(Q_, mass, shape_.gamma);
+  G_ = MatrixXd::Zero(3 * K, 3 * K);
+  addBlockDiagonal(G_, mass, shape_.gamma);
+
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j)
+      for (int c = 0; c < 3; ++c) (shape_.isFixed(i, j) ? fixed_ : free_).push_back(3 * shape_.index(i, j) + c);
+  const int nf = static_cast<int>(free_.size()), nx = static_cast<int>(fixed_.size());
+  MatrixXd Qff(nf, nf);
+  Qfx_.resize(nf, nx);
+  Gf_.resize(nf, 3 * K);
+  for (int a = 0; a < nf; ++a) {
+    for (int b = 0; b < nf; ++b) Qff(a, b) = Q_(free_[a], free_[b]);
+    for (int b = 0; b < nx; ++b) Qfx_(a, b) = Q_(free_[a], fixed_[b]);
+    Gf_.row(a) = G_.row(free_[a]);
+  }
+  ldlt_.compute(Qff);
+  const VectorXd D = ldlt_.vectorD();
+  if (ldlt_.info() != Eigen::Success || !(D.minCoeff() > 1e-13 * std::max(1.0, D.maxCoeff())))
+    throw Error(ErrorCode::Singular, std::string("the energy has no unique minimiser (its matrix is singular)") +
+                                         (f.discrete ? ": use a finer normal sample grid than the degree" : ""));
+}
+
+ControlNet BezierSolver::solve(const ControlNet& initial) const {
+  const int K = (shape_.n + 1) * (shape_.m + 1);
+  if (static_cast<int>(initial.size()) != K) throw Error(ErrorCode::InvalidField, "the control net needs " + std::to_string(K) + " points");
+  VectorXd s(3 * K);
+  for (int k = 0; k < K; ++k) {
+    requireFinite(initial[k], "control point " + std::to_string(k));
+    s.segment<3>(3 * k) = initial[k];
+  }
+  VectorXd xFixed(fixed_.size());
+  for (size_t b = 0; b < fixed_.size(); ++b) xFixed(b) = s(fixed_[b]);
+  const VectorXd xFree = ldlt_.solve(Gf_ * s - Qfx_ * xFixed);
+  if (!xFree.allFinite()) throw Error(ErrorCode::Singular, "the solve produced non-finite control points");
+  ControlNet out = initial;  // fixed rings stay exactly as given
+  for (size_t a = 0; a < free_.size(); ++a) out[free_[a] / 3](free_[a] % 3) = xFree(a);
+  return out;
+}
+
+double BezierSolver::energy(const ControlNet& net, const ControlNet& initial) const {
+  const int K = (shape_.n + 1) * (shape_.m + 1);
+  VectorXd x(3 * K), s(3 * K);
+  for (int k = 0; k < K; ++k) x.segment<3>(3 * k) = net[k], s.segment<3>(3 * k) = initial[k];
+  // ½ xᵀQx - (Gs)ᵀx + ½ sᵀGs = ½ fairness + ½ λ normal + ½ γ |x - s|²_M
+  return 0.5 * x.dot(Q_ * x) - x.dot(G_ * s) + 0.5 * s.dot(G_ * s);
+}
+
+double BezierSolver::normalMisfit(const ControlNet& net) const {
+  const int K = (shape_.n + 1) * (shape_.m + 1);
+  VectorXd x(3 * K);
+  for (int k = 0; k < K; ++k) x.segment<3>(3 * k) = net[k];
+  return x.dot(normal_ * x);
+}
+
+ControlNet solveBezier(const BezierProblem& p) { return BezierSolver(p).solve(p.initial); }
+
+SeparableSurface bezierToSeparable(int n, int m, const ControlNet& net) {
+  // R = Σ_ij B_i(u) B_j(v) P_ij = Σ_b v^b Σ_a u^a C_ab with C = Mu^T P Mv in monomials.
+  const auto mu = bernsteinMonomials(n), mv = bernsteinMonomials(m);
+  SeparableSurface s;
+  s.u0 = 0, s.u1 = 1, s.v0 = 0, s.v1 = 1;
+  for (int c = 0; c < 3; ++c)
+    for (int b = 0; b <= m; ++b) {
+      std::vector<double> poly(n + 1, 0.0);
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= m; ++j) {
+          const double pv = net[i * (m + 1) + j](c) * mv[j][b];
+          if (pv == 0.0) continue;
+          for (int a = 0; a <= n; ++a) poly[a] += mu[i][a] * pv;
+        }
+      VFunction g;
+      g.family = Family::Poly;
+      g.n = b;
+      s.component[c].push_back({g, UFactor::polynomial(poly)});
+    }
+  return s;
+}
+
+}  // namespace pdesurf
