@@ -9,6 +9,7 @@ namespace pdesurf::cli {
 const char* kUsage =
     "usage:\n"
     "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV] [--method M]   print u,v,x,y,z on the grid\n"
+    "  pdesurf sample SCENE.json --control-net [--patch NAME]                 print a Bezier patch's solved control points\n"
     "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]                   write every patch as OBJ\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
@@ -49,6 +50,7 @@ Options parseArgs(const std::vector<std::string>& args) {
     else if (a == "--grid") parseGrid(value(), o), o.gridGiven = true;
     else if (a == "--method") o.method = value();
     else if (a == "--json") o.json = true;
+    else if (a == "--control-net") o.controlNet = true;
     else if (a == "-o" || a == "--output") o.output = value();
     else if (!a.empty() && a[0] == '-' && o.command != "decode-link") throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;

@@ -9,7 +9,7 @@ namespace pdesurf::cli {
 struct Options {
   std::string command, scenePath, patch, output, method;
   int nu = 16, nv = 16;
-  bool gridGiven = false, json = false;
+  bool gridGiven = false, json = false, controlNet = false;
 };
 
 // Throws std::runtime_error with a usage message.

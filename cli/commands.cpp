@@ -12,13 +12,25 @@ namespace pdesurf::cli {
 
 int runSample(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
-  const Patch* patch = o.patch.empty() ? scene.firstPde() : scene.find(o.patch);
-  if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE patch" : "no patch named '" + o.patch + "'");
+  const Patch* patch = o.patch.empty() ? scene.firstSolved() : scene.find(o.patch);
+  if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE or Bezier patch" : "no patch named '" + o.patch + "'");
   Method method;
   if (!o.method.empty()) method = parseMethod(o.method);
-  const GridSamples g = sampleGrid(solvePatch(*patch, o.method.empty() ? nullptr : &method).surface, o.nu, o.nv);
-  out << "u,v,x,y,z\n";
+  const SolvedPatch solved = solvePatch(*patch, o.method.empty() ? nullptr : &method);
   char line[160];
+  if (o.controlNet) {
+    if (patch->kind != PatchKind::Bezier) throw std::runtime_error("--control-net: patch '" + patch->name + "' is not a Bezier patch");
+    out << "i,j,x,y,z\n";
+    const int m = patch->bezier.m;
+    for (size_t k = 0; k < solved.controlNet.size(); ++k) {
+      const Eigen::Vector3d& p = solved.controlNet[k];
+      std::snprintf(line, sizeof line, "%d,%d,%.17g,%.17g,%.17g\n", static_cast<int>(k) / (m + 1), static_cast<int>(k) % (m + 1), p.x(), p.y(), p.z());
+      out << line;
+    }
+    return 0;
+  }
+  const GridSamples g = sampleGrid(solved.surface, o.nu, o.nv);
+  out << "u,v,x,y,z\n";
   for (int j = 0; j <= g.nv; ++j)
     for (int i = 0; i <= g.nu; ++i) {
       const double* X = &g.X[3 * (static_cast<size_t>(j) * (g.nu + 1) + i)];

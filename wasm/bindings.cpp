@@ -6,6 +6,7 @@
 
 #include <new>
 
+#include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
@@ -36,6 +37,46 @@ val operatorOf(const Patch& p) {
     op.set(axis[c], comp);
   }
   return op;
+}
+
+std::vector<float> flatten(const std::vector<Eigen::Vector3d>& pts) {
+  std::vector<float> out;
+  for (const auto& q : pts) out.insert(out.end(), {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())});
+  return out;
+}
+
+// Seed 002 patches: the solved and initial control nets, the guiding normals as arrows on the
+// solved surface, the energy and the normal misfit.
+void setBezierExtras(val& p, const SolvedPatch& sp) {
+  const BezierProblem& b = sp.patch->bezier;
+  p.set("netSize", val::array(std::vector<int>{b.n + 1, b.m + 1}));
+  p.set("controlNet", copyOut(flatten(sp.controlNet)));
+  p.set("initialNet", copyOut(flatten(b.initial)));
+  p.set("energy", sp.energy);
+  p.set("normalMisfit", sp.normalMisfit);
+  p.set("lambda", b.lambda);
+  p.set("gamma", b.gamma);
+  // Arrows: at the discrete samples (at most 17×17 of them) or on a 9×9 grid of the field.
+  std::vector<Eigen::Vector3d> at, dir;
+  const BezierNormalField& f = b.normals;
+  const int nu = f.discrete ? f.np : 8, nv = f.discrete ? f.mp : 8;
+  const int su = std::max(1, nu / 16), sv = std::max(1, nv / 16);
+  for (int i = 0; i <= nu; i += su)
+    for (int j = 0; j <= nv; j += sv) {
+      const double u = static_cast<double>(i) / nu, v = static_cast<double>(j) / nv;
+      at.push_back(evalPoint(sp.surface, u, v));
+      Eigen::Vector3d d = Eigen::Vector3d::Zero();
+      if (f.discrete) {
+        d = f.vectors[i * (f.mp + 1) + j].normalized();
+      } else {
+        const auto bu = bernstein(f.n1, u), bv = bernstein(f.m1, v);
+        for (int a = 0; a <= f.n1; ++a)
+          for (int c = 0; c <= f.m1; ++c) d += bu[a] * bv[c] * f.vectors[a * (f.m1 + 1) + c];
+      }
+      dir.push_back(d);
+    }
+  p.set("normalOrigins", copyOut(flatten(at)));
+  p.set("normalVectors", copyOut(flatten(dir)));
 }
 
 val failure(const char* code, const std::string& message) {
@@ -72,6 +113,7 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
         for (const std::string& m : applicableMethods(sp.patch->pde)) methods.call<void>("push", m);
         p.set("methods", methods);
       }
+      if (sp.patch->kind == PatchKind::Bezier) setBezierExtras(p, sp);
       p.set("positions", copyOut(m.positions));
       p.set("normals", copyOut(m.normals));
       p.set("uvs", copyOut(m.uvs));

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bezier/bezier_problem.hpp"
 #include "methods/method.hpp"
 #include "pde/pde_problem.hpp"
 #include "surface/separable_surface.hpp"
@@ -16,7 +17,7 @@ struct Parameter {
   double value = 0, min = 0, max = 0, step = 0;  // step 0: not given
 };
 
-enum class PatchKind { Pde, Primary };
+enum class PatchKind { Pde, Primary, Bezier };
 
 // coef · T(t) · g(v): one term of a primary surface; T and g are basis functions.
 struct PrimaryTerm {
@@ -58,6 +59,7 @@ struct Patch {
   PdeProblem pde;                       // Pde only
   Method method;                        // Pde only: "method" in the scene, default auto
   PrimarySurface primary;  // Primary only
+  BezierProblem bezier;    // Bezier only (seed 002)
 };
 
 struct Scene {
@@ -67,12 +69,16 @@ struct Scene {
   std::vector<Patch> patches;
   const Patch* find(const std::string& name) const;
   const Patch* firstPde() const;
+  const Patch* firstSolved() const;  // the first pde patch, else the first bezier patch
 };
 
 struct SolvedPatch {
   const Patch* patch;
   SeparableSurface surface;
   Method used;  // Pde only: the method that produced it (auto resolved)
+  // Bezier only: the solved control net, its energy and normal misfit.
+  std::vector<Eigen::Vector3d> controlNet;
+  double energy = 0.0, normalMisfit = 0.0;
 };
 
 constexpr size_t kMaxSceneBytes = 1 << 20;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <set>
 
+#include "bezier/bezier_solver.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
@@ -11,6 +12,8 @@ namespace pdesurf {
 
 using namespace scene_json;
 
+// In scene/bezier_json.cpp.
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch);
 // In scene/pde_json.cpp.
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
@@ -214,12 +217,21 @@ static Scene parseSceneUnchecked(const std::string& text) {
     } else if (kind == "separable") {
       patch.kind = PatchKind::Primary;
       parseSeparable(pj, path, r, patch);
+    } else if (kind == "bezier" && scene.version >= 2) {
+      patch.kind = PatchKind::Bezier;
+      try {
+        parseBezierPatch(pj, path, r, patch);
+        validateBezierProblem(patch.bezier);
+      } catch (const Error& e) {
+        const std::string what = e.what();
+        throw Error(e.code(), what.rfind(path, 0) == 0 ? what : path + ": " + what);
+      }
     } else if (kind == "surface" && scene.version >= 2) {
       patch.kind = PatchKind::Primary;
       parseSurface(pj, path, r, patch);
     } else {
       fail(ErrorCode::InvalidField, path + ".kind",
-           "unknown kind '" + kind + "' (" + (scene.version >= 2 ? "pde, surface, ruled, separable" : "pde, ruled, separable") + ")");
+           "unknown kind '" + kind + "' (" + (scene.version >= 2 ? "pde, surface, bezier, ruled, separable" : "pde, ruled, separable") + ")");
     }
     scene.patches.push_back(std::move(patch));
   }

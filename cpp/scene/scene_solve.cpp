@@ -1,6 +1,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
 #include "scene/scene.hpp"
 
@@ -9,6 +10,13 @@ namespace pdesurf {
 const Patch* Scene::find(const std::string& name) const {
   for (const Patch& p : patches)
     if (p.name == name) return &p;
+  return nullptr;
+}
+
+const Patch* Scene::firstSolved() const {
+  if (const Patch* p = firstPde()) return p;
+  for (const Patch& p : patches)
+    if (p.kind == PatchKind::Bezier) return &p;
   return nullptr;
 }
 
@@ -63,9 +71,17 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 SolvedPatch solvePatch(const Patch& patch, const Method* method) {
   try {
-    if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}};
+    if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}, {}, 0.0, 0.0};
+    if (patch.kind == PatchKind::Bezier) {
+      const BezierSolver solver(patch.bezier);
+      SolvedPatch out{&patch, {}, Method{}, solver.solve(patch.bezier.initial), 0.0, 0.0};
+      out.surface = bezierToSeparable(patch.bezier.n, patch.bezier.m, out.controlNet);
+      out.energy = solver.energy(out.controlNet, patch.bezier.initial);
+      out.normalMisfit = solver.normalMisfit(out.controlNet);
+      return out;
+    }
     MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method);
-    return {&patch, std::move(m.surface), m.used};
+    return {&patch, std::move(m.surface), m.used, {}, 0.0, 0.0};
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
   }

@@ -136,8 +136,10 @@ TEST_CASE("examples: each version-2 file draws exactly what its version-1 origin
   for (const auto& entry : index["examples"]) {
     const std::string id = entry["id"];
     CAPTURE(id);
+    const std::string v1Text = readText(v1FixturePath(entry["file"]));
+    if (v1Text.empty()) continue;  // examples born in version 2 (seed 002's) have no version-1 original
     const Scene v2 = parseScene(readText(examplePath(entry["file"])));
-    const Scene v1 = parseScene(readText(v1FixturePath(entry["file"])));
+    const Scene v1 = parseScene(v1Text);
     REQUIRE(v2.version == 2);
     REQUIRE(v1.version == 1);
     const auto a = solveScene(v2), b = solveScene(v1);

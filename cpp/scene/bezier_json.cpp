@@ -1,0 +1,105 @@
+// The "bezier" patch (seed 002): degree, initial control net, energy, λ, γ and the guiding
+// normal field, continuous (control vectors of its own degree) or discrete (a sample grid of
+// normals, given as vectors or as expressions in u and v, with optional per-sample weights).
+#include "expr/parse.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+using namespace scene_json;
+
+namespace {
+
+std::array<int, 2> pair(const json& j, const std::string& path, int lo, int hi) {
+  if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
+    fail(ErrorCode::InvalidField, path, "expected [integer, integer]");
+  const int a = j[0].get<int>(), b = j[1].get<int>();
+  if (a < lo || b < lo || a > hi || b > hi)
+    fail(ErrorCode::InvalidField, path, "expected values in " + std::to_string(lo) + ".." + std::to_string(hi));
+  return {a, b};
+}
+
+std::vector<Eigen::Vector3d> points(const json& j, const std::string& path, const Resolver& r, size_t count) {
+  if (!j.is_array() || j.size() != count) fail(ErrorCode::InvalidField, path, "expected " + std::to_string(count) + " points [x, y, z]");
+  std::vector<Eigen::Vector3d> out;
+  for (size_t k = 0; k < count; ++k) {
+    const std::string p = path + "[" + std::to_string(k) + "]";
+    if (!j[k].is_array() || j[k].size() != 3) fail(ErrorCode::InvalidField, p, "expected [x, y, z]");
+    out.emplace_back(r.number(j[k][0], p + "[0]"), r.number(j[k][1], p + "[1]"), r.number(j[k][2], p + "[2]"));
+  }
+  return out;
+}
+
+// A per-sample list: an array of count values or an expression in u and v.
+std::vector<double> sampled(const json& j, const std::string& path, const Resolver& r, int np, int mp) {
+  const size_t count = static_cast<size_t>(np + 1) * (mp + 1);
+  std::vector<double> out;
+  if (j.is_array()) {
+    if (j.size() != count) fail(ErrorCode::InvalidField, path, "expected " + std::to_string(count) + " values");
+    for (size_t k = 0; k < count; ++k) out.push_back(r.number(j[k], path + "[" + std::to_string(k) + "]"));
+    return out;
+  }
+  const std::string text = stringField(j, path, kMaxExpressionLength);
+  Expr e;
+  try {
+    e = parseExpression(text, r.values, AllowedVariables{true, true});
+  } catch (const Error& err) {
+    fail(err.code(), path, err.what());
+  }
+  for (int i = 0; i <= np; ++i)
+    for (int k = 0; k <= mp; ++k) {
+      const double vars[2] = {static_cast<double>(k) / mp, static_cast<double>(i) / np};  // v, u
+      const double x = evaluate(*e, vars);
+      if (!std::isfinite(x)) fail(ErrorCode::NonFinite, path, "'" + text + "' is not finite at (u, v) = (" + std::to_string(vars[1]) + ", " + std::to_string(vars[0]) + ")");
+      out.push_back(x);
+    }
+  return out;
+}
+
+}  // namespace
+
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+  allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals"});
+  BezierProblem& b = patch.bezier;
+  const std::string energy = stringField(require(j, "energy", path), path + ".energy");
+  if (energy == "membrane") b.energy = BezierEnergy::Membrane;
+  else if (energy == "thin-plate") b.energy = BezierEnergy::ThinPlate;
+  else fail(ErrorCode::InvalidField, path + ".energy", "expected \"membrane\" or \"thin-plate\"");
+  const auto deg = pair(require(j, "degree", path), path + ".degree", 1, 24);
+  b.n = deg[0], b.m = deg[1];
+  b.initial = points(require(j, "control_net", path), path + ".control_net", r, static_cast<size_t>(b.n + 1) * (b.m + 1));
+  b.lambda = j.contains("lambda") ? r.number(j["lambda"], path + ".lambda") : 0.0;
+  b.gamma = j.contains("gamma") ? r.number(j["gamma"], path + ".gamma") : 0.0;
+  const std::string np = path + ".normals";
+  const json& nj = require(j, "normals", path);
+  if (!nj.is_object()) fail(ErrorCode::InvalidField, np, "expected an object");
+  BezierNormalField& f = b.normals;
+  if (nj.contains("degree")) {
+    allowOnly(nj, np, {"degree", "vectors"});
+    const auto d = pair(nj["degree"], np + ".degree", 0, 24);
+    f.n1 = d[0], f.m1 = d[1];
+    f.vectors = points(require(nj, "vectors", np), np + ".vectors", r, static_cast<size_t>(f.n1 + 1) * (f.m1 + 1));
+  } else {
+    allowOnly(nj, np, {"grid", "vectors", "field", "lambda_weights", "gamma_weights"});
+    f.discrete = true;
+    const auto g = pair(require(nj, "grid", np), np + ".grid", 1, 256);
+    f.np = g[0], f.mp = g[1];
+    const size_t count = static_cast<size_t>(f.np + 1) * (f.mp + 1);
+    if (nj.contains("vectors") == nj.contains("field")) fail(ErrorCode::InvalidField, np, "give either \"vectors\" or \"field\"");
+    if (nj.contains("vectors")) {
+      f.vectors = points(nj["vectors"], np + ".vectors", r, count);
+    } else {
+      const std::string fp = np + ".field";
+      allowOnly(nj["field"], fp, {"x", "y", "z"});
+      std::array<std::vector<double>, 3> c;
+      for (int k = 0; k < 3; ++k)
+        c[k] = sampled(require(nj["field"], kAxis[k], fp), fp + "." + kAxis[k], r, f.np, f.mp);
+      for (size_t q = 0; q < count; ++q) f.vectors.emplace_back(c[0][q], c[1][q], c[2][q]);
+    }
+    if (nj.contains("lambda_weights")) f.lambdaWeight = sampled(nj["lambda_weights"], np + ".lambda_weights", r, f.np, f.mp);
+    if (nj.contains("gamma_weights")) f.gammaWeight = sampled(nj["gamma_weights"], np + ".gamma_weights", r, f.np, f.mp);
+  }
+}
+
+}  // namespace pdesurf
