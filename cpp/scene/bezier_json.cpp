@@ -66,7 +66,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
   if (energy == "membrane") b.energy = BezierEnergy::Membrane;
   else if (energy == "thin-plate") b.energy = BezierEnergy::ThinPlate;
   else fail(ErrorCode::InvalidField, path + ".energy", "expected \"membrane\" or \"thin-plate\"");
-  const auto deg = pair(require(j, "degree", path), path + ".degree", 1, 24);
+  const auto deg = pair(require(j, "degree", path), path + ".degree", 1, 16);
   b.n = deg[0], b.m = deg[1];
   b.initial = points(require(j, "control_net", path), path + ".control_net", r, static_cast<size_t>(b.n + 1) * (b.m + 1));
   b.lambda = j.contains("lambda") ? r.number(j["lambda"], path + ".lambda") : 0.0;
