@@ -1,19 +1,25 @@
-// Page wiring: load the solver and the example catalogue, open an example, and
-// re-solve whenever the scene (the page state) changes.
+// Page wiring: load the solver and the example catalogue, open what the URL hash
+// names (a shared link, an example, or the default example), and re-solve whenever
+// the scene (the page state) changes.
 import { loadSolver } from './solver/pdesurf-solver.js';
 import { createViewer } from './viewer/viewer.js';
 import { createPanel } from './ui/panel.js';
+import { createGallery } from './ui/gallery.js';
 import { createStatus } from './ui/status.js';
 import { createSceneState } from './state/scene-state.js';
 import { createSolveScheduler } from './state/solve-scheduler.js';
 import { loadExampleIndex, loadExampleScene } from './state/examples.js';
-import { exampleIdFromHash, writeExampleIdToHash } from './state/hash.js';
+import { readHash, writeExampleIdToHash } from './state/hash.js';
+import { shareLink, shareMessage } from './state/share-link.js';
+import { decodeFragment } from './link/link-codec.js';
 import { installTestHooks } from './test-hooks.js';
+
+const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
 let viewer = null;
-const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []));
+const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), () => viewer?.getCamera() ?? null);
 
 function messageOf(err) {
   if (err && err.code) return `${err.code}: ${err.message}`;
@@ -45,15 +51,36 @@ async function start() {
   const state = createSceneState();
   const scheduler = createSolveScheduler(solveNow);
   let fitPending = false; // frame the camera on the first good solve of an example
+  let cameraPending = null; // or restore a shared link's camera instead
+  let linkPending = false; // a link's scene that has not solved yet
   let notice = null; // shown instead of the solve summary once (e.g. a bad link)
-  let loadToken = 0; // a slower fetch of an earlier pick must not win
+  let loadToken = 0; // a slower fetch or decode of an earlier pick must not win
+  let typingTimer = 0;
 
+  const gallery = createGallery(document.getElementById('gallery'), examples, (id) => openExample(id));
   const panel = createPanel({
-    examples,
     grid: state.grid,
-    onExample: (id) => openExample(id),
     onGridChange: () => scheduler.request(),
-    onParameterChange: () => scheduler.request(),
+    onShare: () => copyLink(),
+    parameterHandlers: {
+      onChange: () => scheduler.request(),
+      onAdd: (name, value) => {
+        try {
+          state.addParameter(name, value);
+        } catch (err) {
+          status.error(`cannot add the parameter: ${err.message}`);
+          return;
+        }
+        panel.refreshParameters();
+        scheduler.request();
+      },
+      // Allowed even while an expression uses it: the solver's error then says where.
+      onRemove: (name) => {
+        state.removeParameter(name);
+        panel.refreshParameters();
+        scheduler.request();
+      },
+    },
     operatorHandlers: {
       methodOf: (patch) => state.methodOf(patch),
       onParam: (patch, axis, name, value) => {
@@ -62,7 +89,10 @@ async function start() {
       },
       onOrder: (patch, axis, order) => {
         const params = state.setOperatorOrder(patch, axis, order);
-        if (params) scheduler.request();
+        if (params) {
+          panel.setOrder(patch, axis, order);
+          scheduler.request();
+        }
         return params;
       },
       onMethod: (patch, method) => {
@@ -70,7 +100,24 @@ async function start() {
         scheduler.request();
       },
     },
+    onExpression: (patch, field, text) => {
+      state.setExpression(patch, field, text);
+      clearTimeout(typingTimer);
+      typingTimer = setTimeout(() => scheduler.request(), EXPRESSION_DEBOUNCE_MS);
+    },
   });
+
+  // Shared by examples and links: the scene becomes the page state and is solved.
+  function showScene(scene, { exampleId = null, title, camera = null }) {
+    state.setScene(scene, exampleId);
+    hooks.exampleId = exampleId;
+    panel.showScene(scene);
+    gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+    titleEl.textContent = title;
+    cameraPending = camera;
+    fitPending = !camera;
+    scheduler.request();
+  }
 
   async function openExample(id) {
     let entry = examples.find((e) => e.id === id);
@@ -79,6 +126,7 @@ async function start() {
       entry = examples[0];
     }
     const token = ++loadToken;
+    linkPending = false;
     status.info(`loading ${entry.title}…`);
     let scene;
     try {
@@ -88,15 +136,38 @@ async function start() {
       return;
     }
     if (token !== loadToken) return;
-    state.setScene(scene, entry.id);
-    hooks.exampleId = entry.id;
     writeExampleIdToHash(entry.id);
-    panel.setExample(entry.id);
-    panel.showScene(scene);
     const src = entry.source ? [entry.source.paper, entry.source.figure].filter(Boolean).join(', ') : '';
-    titleEl.textContent = src ? `${entry.title} (${src})` : entry.title;
-    fitPending = true;
-    scheduler.request();
+    showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title });
+  }
+
+  // A link that cannot be read says why and opens the default example: never a blank page.
+  async function openLink(text) {
+    const token = ++loadToken;
+    status.info('opening the shared link…');
+    let linked;
+    try {
+      linked = await decodeFragment(text);
+    } catch (err) {
+      if (token !== loadToken) return;
+      notice = `cannot open the link: ${err && err.message ? err.message : err}`;
+      await openExample(examples[0].id);
+      return;
+    }
+    if (token !== loadToken) return;
+    if (linked.grid) {
+      Object.assign(state.grid, linked.grid);
+      panel.refreshGrid();
+    }
+    linkPending = true;
+    const title = typeof linked.scene.title === 'string' && linked.scene.title ? linked.scene.title : 'untitled scene';
+    showScene(linked.scene, { title: `${title} (shared link)`, camera: linked.camera || null });
+  }
+
+  function openFromHash() {
+    const h = readHash();
+    if (h.kind === 'state') return openLink(h.text);
+    return openExample(h.kind === 'example' ? h.id : examples[0].id);
   }
 
   function solveNow() {
@@ -107,32 +178,57 @@ async function start() {
     try {
       result = solver.solve(state.text(), state.grid);
     } catch (err) {
+      if (linkPending) {
+        // The link decoded but its scene does not solve: nothing good to keep on screen.
+        linkPending = false;
+        notice = `cannot open the link: ${messageOf(err)}`;
+        openExample(examples[0].id);
+        return;
+      }
       fail(err);
+      panel.showSolveError(err && err.message ? err.message : String(err));
       return;
     }
     const ms = performance.now() - t0;
+    linkPending = false;
     viewer.setPatches(result.patches);
-    if (fitPending) {
-      viewer.fit();
-      fitPending = false;
-    }
+    if (cameraPending) viewer.setCamera(cameraPending);
+    else if (fitPending) viewer.fit();
+    cameraPending = null;
+    fitPending = false;
     panel.showSolved(result.patches);
     hooks.lastError = null;
     hooks.ready = true;
     const { nu, nv } = state.grid;
-    const summary = `${result.patches.length} patches, grid ${nu}×${nv}, solved in ${ms.toFixed(1)} ms`;
+    const n = result.patches.length;
+    const summary = `${n} ${n === 1 ? 'patch' : 'patches'}, grid ${nu}×${nv}, solved in ${ms.toFixed(1)} ms`;
+    hooks.notice = notice;
     if (notice) status.error(notice);
     else status.info(summary);
     notice = null;
   }
 
-  // A link edited by hand or history navigation opens the example it names.
+  async function copyLink() {
+    if (!state.scene) return;
+    try {
+      const shared = await shareLink({ scene: state.scene, grid: { ...state.grid }, camera: viewer.getCamera() });
+      hooks.lastLink = shared.url;
+      panel.showLinkLength(shared.chars);
+      if (shared.long) status.warn(shareMessage(shared));
+      else status.info(shareMessage(shared));
+    } catch (err) {
+      status.error(`cannot make a link: ${messageOf(err)}`);
+    }
+  }
+
+  // A link pasted into the address bar or history navigation opens what it names.
   window.addEventListener('hashchange', () => {
-    const id = exampleIdFromHash();
-    if (id && id !== state.exampleId) openExample(id);
+    const h = readHash();
+    if (h.kind === 'example' && h.id === state.exampleId) return;
+    openFromHash();
   });
 
-  await openExample(exampleIdFromHash() || examples[0].id);
+  await openFromHash();
 }
 
 start().catch(fail);

@@ -15,14 +15,17 @@ export function checksumOf(arrays) {
   return total;
 }
 
-export function installTestHooks(getPositionArrays) {
+export function installTestHooks(getPositionArrays, getCamera = () => null) {
   const hooks = {
     ready: false, // true once the first mesh is drawn
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve
-    exampleId: null,
+    exampleId: null, // null while a scene from a shared link is open
+    notice: null, // the last notice shown instead of a solve summary (bad link, unknown example)
+    lastLink: null, // the URL the last "copy link" produced
     checksum: () => checksumOf(getPositionArrays()),
     vertexCount: () => getPositionArrays().reduce((n, a) => n + a.length / 3, 0),
+    camera: () => getCamera(), // { position, target } as a link stores it
   };
   window.__pdesurf = hooks;
   return hooks;

@@ -150,3 +150,46 @@ test('decode-link refuses hostile links by name, quickly', async () => {
     assert.ok(Date.now() - t0 < 2000, 'fails fast');
   }
 });
+
+test('decode-link opens every stored link fixture the way the page does', () => {
+  const fixtures = JSON.parse(readFileSync(join(root, 'tests/links/links.json'), 'utf8')).fixtures;
+  const byKind = {
+    format: /not a pdesurf link/, version: /unknown link version/, base64: /bad base64/, deflate: /broken|truncated/,
+    size: /inflates to more than/, json: /not JSON|holds no scene/, scene: /holds no scene/,
+  };
+  assert.ok(fixtures.length >= 4);
+  for (const f of fixtures) {
+    const r = run('decode-link', f.link);
+    if (f.expect) {
+      assert.equal(r.status, 0, `${f.name}: ${r.stderr}`);
+      const scene = JSON.parse(r.stdout);
+      assert.equal(scene.title, f.expect.title, f.name);
+      const values = Object.fromEntries(Object.entries(scene.parameters ?? {}).map(([k, p]) => [k, p.value]));
+      assert.deepEqual(values, f.expect.parameters, f.name);
+    } else {
+      assert.equal(r.status, 1, `${f.name} must be refused`);
+      assert.match(r.stderr, byKind[f.kind] ?? /./, `${f.name}: ${r.stderr}`);
+    }
+  }
+});
+
+test('Bezier patches: sample, export and --control-net', () => {
+  const hat = example('wu2015-fig2');
+  const net = run('sample', hat, '--control-net');
+  assert.equal(net.status, 0, net.stderr);
+  const rows = net.stdout.trim().split('\n');
+  assert.equal(rows[0], 'i,j,x,y,z');
+  assert.equal(rows.length - 1, 64, '8×8 control points');
+  // The boundary ring is fixed: the first row is the initial net's, bit for bit.
+  const scene = JSON.parse(readFileSync(hat, 'utf8'));
+  const initial = scene.patches[0].control_net;
+  rows.slice(1).forEach((line) => {
+    const [i, j, x, y, z] = line.split(',').map(Number);
+    if (i === 0 || j === 0 || i === 7 || j === 7) assert.deepEqual([x, y, z], initial[i * 8 + j]);
+  });
+  const surface = parseCsv(run('sample', hat, '--grid', '4x4').stdout);
+  assert.equal(surface.length, 25);
+  const pde = run('sample', example('you2004-fig2a'), '--control-net');
+  assert.equal(pde.status, 1);
+  assert.match(pde.stderr, /not a Bezier patch/);
+});

@@ -1,7 +1,8 @@
 // Fitting a coordinate's boundary lists (boundary.<axis>.u0 / .u1) to its operator's
 // order. The solver refuses more conditions than order/2, so lowering the order must
 // drop the higher derivative conditions; they are kept here so that raising the order
-// again brings them back instead of zeros.
+// again brings them back instead of zeros. Entries are term arrays (version 1) or
+// expression strings (version 2); the stash only moves them.
 
 const ENDS = ['u0', 'u1'];
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
@@ -23,9 +24,10 @@ export function createBoundaryStash() {
 
     /**
      * Make patch.boundary[axis].u0 and .u1 exactly `count` entries long: extra entries
-     * move into the stash, missing ones come back from it or are [] (zero).
+     * move into the stash, missing ones come back from it or are `zero` ([] for a
+     * version-1 term list, "0" for a version-2 expression).
      */
-    fit(patch, axis, count) {
+    fit(patch, axis, count, zero = []) {
       if (!isObject(patch.boundary)) patch.boundary = {};
       if (!isObject(patch.boundary[axis])) patch.boundary[axis] = {};
       const comp = patch.boundary[axis];
@@ -36,7 +38,7 @@ export function createBoundaryStash() {
         list.length = Math.min(list.length, count);
         for (let i = list.length; i < count; i++) {
           // Moved back, not copied: the scene and the stash never share an entry.
-          list.push(kept.has(i) ? kept.get(i) : []);
+          list.push(kept.has(i) ? kept.get(i) : structuredClone(zero));
           kept.delete(i);
         }
         comp[end] = list;

@@ -1,15 +1,33 @@
-// The URL hash holds the open example (#example=<id>) so a link reopens it.
+// The URL hash says what the page opens: "#s=…" a shared page state (web/link/),
+// "#example=<id>" an example, nothing the default example.
+
+/** { kind: 'state', text } | { kind: 'example', id } | { kind: 'none' } */
+export function readHash(hash = location.hash) {
+  const body = hash.replace(/^#/, '');
+  // A state link is checked first and handed over whole: the link codec parses it
+  // (URLSearchParams would turn a '+' a mail client left in it into a space).
+  if (body.split('&').some((part) => part.startsWith('s='))) return { kind: 'state', text: body };
+  const id = new URLSearchParams(body).get('example');
+  return id ? { kind: 'example', id } : { kind: 'none' };
+}
 
 /** The example id named in the hash, or null. */
 export function exampleIdFromHash(hash = location.hash) {
-  const params = new URLSearchParams(hash.replace(/^#/, ''));
-  const id = params.get('example');
-  return id ? id : null;
+  const h = readHash(hash);
+  return h.kind === 'example' ? h.id : null;
 }
 
 /** Write the id into the hash without adding a history entry or firing hashchange. */
 export function writeExampleIdToHash(id) {
-  const params = new URLSearchParams(location.hash.replace(/^#/, ''));
-  params.set('example', id);
-  history.replaceState(null, '', '#' + params.toString());
+  history.replaceState(null, '', '#' + new URLSearchParams({ example: id }).toString());
+}
+
+/** Write a shared-state link ("s=1.…") into the hash, the same way. */
+export function writeLinkToHash(link) {
+  history.replaceState(null, '', '#' + link);
+}
+
+/** The full URL the page has with `link` as its hash. */
+export function urlWithHash(link) {
+  return `${location.origin}${location.pathname}${location.search}#${link}`;
 }

@@ -2,6 +2,8 @@
 // JSON.stringify(scene) is exactly what the solver sees.
 import { withParam, withOrder, orderOf, defaultParams } from './operator-edit.js';
 import { createBoundaryStash } from './boundary-stash.js';
+import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate } from './expression-edit.js';
+import { addParameter, removeParameter } from './parameter-edit.js';
 
 export function createSceneState() {
   const stash = createBoundaryStash(); // derivative conditions dropped by order changes
@@ -48,7 +50,7 @@ export function createSceneState() {
       const patch = state.pdePatch(patchName);
       if (orderOf(patch.operator, axis) === order) return null;
       patch.operator = withOrder(patch.operator, axis, order);
-      stash.fit(patch, axis, order / 2);
+      stash.fit(patch, axis, order / 2, hasExpressions(state.scene) ? '0' : []);
       return defaultParams(order);
     },
 
@@ -63,6 +65,38 @@ export function createSceneState() {
     methodOf(patchName) {
       const patch = state.pdePatches().find((p) => p.name === patchName);
       return patch && typeof patch.method === 'string' ? patch.method : 'auto';
+    },
+
+    /** The patch named `name` of any kind; throws if there is none. */
+    patch(name) {
+      const patch = (state.scene?.patches || []).find((p) => p && p.name === name);
+      if (!patch) throw new Error(`no patch named ${JSON.stringify(name)}`);
+      return patch;
+    },
+
+    /** Index of a patch in scene.patches (the solver names fields by it), or -1. */
+    patchIndex(name) {
+      return (state.scene?.patches || []).findIndex((p) => p && p.name === name);
+    },
+
+    /**
+     * Write one expression field: { kind: 'boundary', axis, end, k } | { kind: 'force', axis }
+     * | { kind: 'surface', axis }.
+     */
+    setExpression(patchName, field, text) {
+      const patch = state.patch(patchName);
+      if (field.kind === 'boundary') setBoundarySlot(patch, field.axis, field.end, field.k, text);
+      else if (field.kind === 'force') setForce(patch, field.axis, text);
+      else if (field.kind === 'surface') setSurfaceCoordinate(patch, field.axis, text);
+      else throw new Error(`unknown expression field ${JSON.stringify(field.kind)}`);
+    },
+
+    addParameter(name, value) {
+      return addParameter(state.scene, name, value);
+    },
+
+    removeParameter(name) {
+      removeParameter(state.scene, name);
     },
 
     /** The text handed to the solver. */

@@ -1,70 +1,103 @@
-// The control panel (three's bundled lil-gui): example picker, grid resolution, and
-// the per-scene folders that are rebuilt whenever another example opens.
+// The control panel (three's bundled lil-gui): the per-scene folders (parameters,
+// blends' operators, version-2 function fields), then sharing and grid resolution.
+// Scene folders are rebuilt whenever another scene opens; the gallery is elsewhere.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
-import { escapeHtml } from './html-text.js';
 import { buildParameterFolder } from './parameter-controls.js';
 import { buildOperatorFolders } from './operator-controls.js';
+import { buildExpressionFolders } from './expression-folders.js';
+import { buildShareFolder } from './share-controls.js';
+import { hasExpressions } from '../state/expression-edit.js';
 
 const GRID_MIN = 4;
 const GRID_MAX = 256;
 
 /**
- * examples: [{id, title}]; grid: {nu, nv} (edited in place);
- * onExample(id), onGridChange(), onParameterChange();
- * operatorHandlers: see buildOperatorFolders (methodOf, onParam, onOrder, onMethod).
+ * grid: {nu, nv} (edited in place); onGridChange(); onShare();
+ * parameterHandlers: { onChange, onAdd(name, value) -> bool, onRemove(name) };
+ * operatorHandlers: see buildOperatorFolders; onExpression(patch, field, text).
  */
-export function createPanel({ examples, grid, onExample, onGridChange, onParameterChange, operatorHandlers }) {
-  const gui = new GUI({ title: 'pdesurf', width: 320 });
+export function createPanel({ grid, onGridChange, onShare, parameterHandlers, operatorHandlers, onExpression }) {
+  const gui = new GUI({ title: 'pdesurf', width: 340 });
   gui.domElement.id = 'panel';
 
-  // lil-gui parses option labels as HTML: escape them, and keep labels unique.
-  const options = {};
-  for (const e of examples) {
-    let label = escapeHtml(e.title);
-    while (label in options) label += ' ';
-    options[label] = e.id;
-  }
-  const picker = { example: examples[0].id };
-  const pickerCtrl = gui.add(picker, 'example', options).name('example').onChange((id) => onExample(id));
-  pickerCtrl.domElement.dataset.control = 'example';
-
+  const share = buildShareFolder(gui, onShare);
   const gridFolder = gui.addFolder('Grid');
-  for (const key of ['nu', 'nv']) {
+  const gridCtrls = ['nu', 'nv'].map((key) => {
     const c = gridFolder.add(grid, key, GRID_MIN, GRID_MAX, 1).onChange(onGridChange);
     c.domElement.dataset.grid = key;
-  }
+    return c;
+  });
   gridFolder.close();
 
+  let scene = null;
   let paramFolder = null;
   let operators = null;
-  // Scene folders are appended as they are built; keep the grid folder last.
-  const gridToEnd = () => gui.$children.appendChild(gridFolder.domElement);
+  let expressions = null;
+  // Scene folders are appended as they are built; keep share and grid last.
+  const fixedToEnd = () => {
+    gui.$children.appendChild(share.folder);
+    gui.$children.appendChild(gridFolder.domElement);
+  };
+
+  function buildParameters() {
+    const old = paramFolder;
+    paramFolder = buildParameterFolder(gui, scene, parameterHandlers);
+    // A rebuild (parameter added or removed) keeps the folder where it was, open.
+    if (old) {
+      gui.$children.insertBefore(paramFolder.domElement, old.domElement);
+      old.destroy();
+    }
+  }
 
   return {
     gui,
 
-    /** Reflect an example opened from elsewhere (hash, first load) without firing onChange. */
-    setExample(id) {
-      picker.example = id;
-      pickerCtrl.updateDisplay();
-    },
-
-    /** New scene: fresh parameter sliders; operator folders wait for its first solve. */
-    showScene(scene) {
+    /** New scene: fresh parameter sliders; operator and function folders wait for its first solve. */
+    showScene(next) {
+      scene = next;
       if (paramFolder) paramFolder.destroy();
-      if (operators) operators.destroy();
-      operators = null;
-      paramFolder = buildParameterFolder(gui, scene, onParameterChange);
-      gridToEnd();
+      paramFolder = null;
+      operators?.destroy();
+      expressions?.destroy();
+      operators = expressions = null;
+      buildParameters();
+      fixedToEnd();
     },
 
-    /** After a successful solve: build operator folders once per scene, else refresh them. */
+    /** Parameters were added or removed: rebuild their folder in place. */
+    refreshParameters() {
+      buildParameters();
+    },
+
+    /** After a successful solve: build the scene folders once per scene, else refresh them. */
     showSolved(patches) {
-      if (operators) operators.update(patches);
-      else {
-        operators = buildOperatorFolders(gui, patches, operatorHandlers);
-        gridToEnd();
+      if (operators) {
+        operators.update(patches);
+        expressions?.update(patches);
+        return;
       }
+      operators = buildOperatorFolders(gui, patches, operatorHandlers);
+      if (hasExpressions(scene)) expressions = buildExpressionFolders(gui, scene, patches, onExpression);
+      fixedToEnd();
+    },
+
+    /** After a failed solve: the message beside the function field it names; returns its path or null. */
+    showSolveError(message) {
+      return expressions ? expressions.showSolveError(message) : null;
+    },
+
+    /** A coordinate's order changed: its function fields follow at once. */
+    setOrder(patchName, axis, order) {
+      expressions?.setOrder(patchName, axis, order);
+    },
+
+    /** The grid object was replaced in place (a link's grid): show its values. */
+    refreshGrid() {
+      for (const c of gridCtrls) c.updateDisplay();
+    },
+
+    showLinkLength(chars) {
+      share.showLength(chars);
     },
   };
 }

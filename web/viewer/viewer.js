@@ -67,6 +67,24 @@ export function createViewer(container) {
       render();
     },
 
+    /** The view as plain arrays, for links: { position: [x, y, z], target: [x, y, z] }. */
+    getCamera() {
+      return { position: camera.position.toArray(), target: controls.target.toArray() };
+    },
+
+    /** Restore a view from getCamera()'s form (a shared link's camera). */
+    setCamera({ position, target }) {
+      camera.position.fromArray(position);
+      controls.target.fromArray(target);
+      // fit() sizes the clipping range from the distance; do the same here.
+      const dist = Math.max(camera.position.distanceTo(controls.target), 1e-6);
+      camera.near = dist / 100;
+      camera.far = dist * 100;
+      camera.updateProjectionMatrix();
+      controls.update();
+      render();
+    },
+
     /** Position arrays of the drawn meshes, in draw order. */
     positionArrays() {
       return surfaces.children.map((m) => m.geometry.getAttribute('position').array);

@@ -1,0 +1,101 @@
+// Shared set-up of the browser tests: the static server, Debian's Chromium through
+// playwright-core (never a downloaded browser), pages that record every console
+// error, page error and failed request, and helpers over window.__pdesurf.
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { startServer } from '../../scripts/static-server.mjs';
+import { decodePng, pixelStats } from './png-decode.mjs';
+
+export const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+// Another site root (with examples/, web/, node_modules/) can be tested in place of the repo.
+export const ROOT = process.env.PDESURF_TEST_ROOT ? path.resolve(process.env.PDESURF_TEST_ROOT) : REPO;
+const WASM_DIR = process.env.PDESURF_WASM_DIR || path.join(REPO, 'build', 'wasm');
+export const OUT_DIR = path.join(REPO, 'build', 'browser');
+const CHROMIUM = '/usr/bin/chromium';
+export const BACKGROUND = [0x20, 0x24, 0x2b]; // web/viewer/viewer.js BACKGROUND
+const ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync',
+  '--use-gl=angle', '--use-angle=swiftshader',
+];
+
+export const skip = fs.existsSync(CHROMIUM) ? false : `${CHROMIUM} is missing (apt-get install chromium); browser tests skipped`;
+
+export const exampleIndex = () => JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'index.json'), 'utf8')).examples;
+
+/** Start server + browser. Returns { base, problems, open(url) -> page, close() }. */
+export async function startHarness() {
+  assert.ok(fs.existsSync(path.join(WASM_DIR, 'pdesurf.js')), `no wasm module in ${WASM_DIR}: build it first (scripts/build-wasm)`);
+  assert.ok(fs.existsSync(path.join(ROOT, 'examples', 'index.json')), `no examples/index.json under ${ROOT}`);
+  assert.ok(fs.existsSync(path.join(ROOT, 'node_modules', 'three')), 'node_modules/three is missing: run npm ci');
+  fs.mkdirSync(OUT_DIR, { recursive: true });
+  const server = await startServer({ port: 0, root: ROOT, wasmDir: WASM_DIR });
+  const base = `http://127.0.0.1:${server.address().port}`;
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-chromium-'));
+  const { chromium } = await import('playwright-core');
+  // A persistent context is how playwright takes --user-data-dir.
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: CHROMIUM, args: ARGS, headless: true, viewport: { width: 1280, height: 800 },
+  });
+  const problems = []; // console errors, page errors, failed requests
+  let first = context.pages()[0];
+
+  return {
+    base,
+    problems,
+    /** A fresh page (closing none) loading `url` and waiting for its first draw or error. */
+    async open(url, { wait = true } = {}) {
+      const page = first || (await context.newPage());
+      first = null;
+      page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+      page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+      page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+      await page.goto(url.startsWith('http') ? url : `${base}${url}`);
+      if (wait) await waitReady(page);
+      return page;
+    },
+    async close() {
+      await context.close();
+      await new Promise((r) => server.close(r));
+      fs.rmSync(userDataDir, { recursive: true, force: true });
+    },
+  };
+}
+
+export async function waitReady(page) {
+  await page.waitForFunction(() => window.__pdesurf && (window.__pdesurf.ready || window.__pdesurf.lastError),
+    null, { timeout: 30_000 });
+}
+
+export const hooks = (page) => page.evaluate(() => {
+  const h = window.__pdesurf;
+  return { ready: h.ready, solveCount: h.solveCount, lastError: h.lastError, exampleId: h.exampleId,
+    notice: h.notice, lastLink: h.lastLink, checksum: h.checksum(), vertexCount: h.vertexCount(), camera: h.camera() };
+});
+
+/** Wait until a solve after `count` has happened and the frame is painted. */
+export async function solvedAfter(page, count) {
+  await page.waitForFunction((n) => window.__pdesurf.solveCount > n, count, { timeout: 20_000 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+  return hooks(page);
+}
+
+/** Screenshot into build/browser/<name>, decoded. */
+export async function shoot(page, name) {
+  return decodePng(await page.screenshot({ path: path.join(OUT_DIR, name) }));
+}
+
+/** Pixel statistics of the 3D view minus the gallery, the panel, the title bar and the status line. */
+export async function viewStats(page, img) {
+  const r = await page.evaluate(() => {
+    const view = document.getElementById('viewport').getBoundingClientRect();
+    const panel = document.getElementById('panel').getBoundingClientRect();
+    return { x0: Math.ceil(view.left), x1: Math.floor(Math.min(view.right, panel.left)) };
+  });
+  return pixelStats(img, { x0: r.x0, y0: 40, x1: r.x1, y1: img.height - 50 }, BACKGROUND);
+}
+
+export const sameChecksum = (a, b) => Math.abs(a - b) <= 1e-9 * Math.abs(b);
