@@ -8,6 +8,7 @@
 
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
+#include "ode/basis_cache.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 #include "surface/tabulation.hpp"
@@ -93,7 +94,9 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
   try {
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
-    const auto solved = solveScene(scene);
+    // Kept between calls: a slider that moves a trimline reuses every ODE basis.
+    static BasisCache bases;
+    const auto solved = solveScene(scene, &bases);
     // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
     // buffers, uvs and indices are reused instead of rebuilt.
     static std::vector<Mesh> meshes;

@@ -80,30 +80,39 @@ std::vector<std::string> applicableMethods(const PdeProblem& p) {
   return out;
 }
 
-MethodSolution solveWithMethod(const PdeProblem& p, const Method& m) {
+MethodSolution solveWithMethod(const PdeProblem& p, const Method& m, BasisCache* cache) {
   MethodSolution out;
   out.used = m;
   switch (m.kind) {
     case MethodKind::Auto: {
-      PdeProblem restored;
-      if (restoreFamilies(p, &restored)) {
-        out.surface = solveClosedForm(restored);
+      if (!hasGeneralTerms(p)) {  // the common case: no copy of the problem
+        out.surface = solveClosedForm(p, cache);
         out.used.kind = MethodKind::Closed;
         return out;
       }
-      out = solveReference(p, 1e-9);
+      PdeProblem restored;
+      if (restoreFamilies(p, &restored)) {
+        out.surface = solveClosedForm(restored, cache);
+        out.used.kind = MethodKind::Closed;
+        return out;
+      }
+      out = solveReference(p, 1e-9, cache);
       out.used.kind = MethodKind::Modal;
       out.used.terms = out.referenceTerms;
       return out;
     }
     case MethodKind::Closed: {
+      if (!hasGeneralTerms(p)) {
+        out.surface = solveClosedForm(p, cache);
+        return out;
+      }
       PdeProblem restored;
       restoreFamilies(p, &restored);  // what stays general makes the closed form refuse, by name
-      out.surface = solveClosedForm(restored);
+      out.surface = solveClosedForm(restored, cache);
       return out;
     }
-    case MethodKind::Reference: return solveReference(p);
-    case MethodKind::Modal: out.surface = solveModal(p, m.terms); return out;
+    case MethodKind::Reference: return solveReference(p, 1e-12, cache);
+    case MethodKind::Modal: out.surface = solveModal(p, m.terms, cache); return out;
     case MethodKind::Fourier: out.surface = solveFourier(p, m.terms); return out;
     case MethodKind::PseudoSpectral: out.surface = solvePseudoSpectral(p, m.terms); return out;
     case MethodKind::PseudoNavier: out.surface = solvePseudoNavier(p, m.navierM, m.navierN, m.navierPoints); return out;

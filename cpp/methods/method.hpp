@@ -43,13 +43,15 @@ struct MethodSolution {
   double referenceChange = 0.0;  // reference: the last change between N and 2N
 };
 
-MethodSolution solveWithMethod(const PdeProblem& p, const Method& m);
+class BasisCache;
+// `cache` (optional) keeps the closed form's ODE bases between solves.
+MethodSolution solveWithMethod(const PdeProblem& p, const Method& m, BasisCache* cache = nullptr);
 
 // The pieces, for tests and benchmarks.
 SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points);
-SeparableSurface solveModal(const PdeProblem& p, int N);
+SeparableSurface solveModal(const PdeProblem& p, int N, BasisCache* cache = nullptr);
 SeparableSurface solveFourier(const PdeProblem& p, int N);
 SeparableSurface solvePseudoSpectral(const PdeProblem& p, int N);
-MethodSolution solveReference(const PdeProblem& p, double tolerance = 1e-12);
+MethodSolution solveReference(const PdeProblem& p, double tolerance = 1e-12, BasisCache* cache = nullptr);
 
 }  // namespace pdesurf

@@ -79,16 +79,16 @@ bool allPeriodic(const PdeProblem& p) {
 
 }  // namespace
 
-SeparableSurface solveModal(const PdeProblem& p, int N) {
+SeparableSurface solveModal(const PdeProblem& p, int N, BasisCache* cache) {
   if (N < 1 || N > 2048) throw Error(ErrorCode::InvalidField, "modal needs 1 <= N <= 2048 terms");
-  return solveClosedForm(modalProblem(p, N));
+  return solveClosedForm(modalProblem(p, N), cache);
 }
 
-MethodSolution solveReference(const PdeProblem& p, double tolerance) {
+MethodSolution solveReference(const PdeProblem& p, double tolerance, BasisCache* cache) {
   MethodSolution out;
   PdeProblem restored;
   if (restoreFamilies(p, &restored)) {
-    out.surface = solveClosedForm(restored);
+    out.surface = solveClosedForm(restored, cache);
     out.used.kind = MethodKind::Closed;
     return out;
   }
@@ -102,10 +102,10 @@ MethodSolution solveReference(const PdeProblem& p, double tolerance) {
     for (int N = 16; N <= 1024; N *= 2) steps.push_back(N);
   else
     for (int N = 4; N <= kMaxOpenDegree; N += 2) steps.push_back(N);
-  SeparableSurface prev = solveModal(p, steps[0]);
+  SeparableSurface prev = solveModal(p, steps[0], cache);
   double best = INFINITY;
   for (size_t k = 1; k < steps.size(); ++k) {
-    SeparableSurface cur = solveModal(p, steps[k]);
+    SeparableSurface cur = solveModal(p, steps[k], cache);
     const double c = change(prev, cur);
     if (!periodic && c > best) break;  // the previous step was the most accurate
     best = c;

@@ -139,7 +139,8 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma, int f
   std::vector<double> gamma(n_ + 1);  // gamma[m] multiplies the 2m-th derivative
   for (int k = 0; k <= n_; ++k) gamma[n_ - k] = alpha[k] * std::pow(sigma, k);
   const int size = 2 * n_ + extra_;
-  Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(size, size);
+  if (size > kMaxBoundarySystem) throw Error(ErrorCode::InvalidField, "force polynomial of too high a degree");
+  BoundaryMatrix a = BoundaryMatrix::Zero(size, size);
   int col = 0;
   for (const Cluster& cl : clusters_) {
     for (const auto& q : cl.basis) {
@@ -177,7 +178,7 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma, int f
 
 UFactor EvenOdeBasis::solve(const double* left, const double* right, const std::vector<double>& force) const {
   if (static_cast<int>(force.size()) > extra_) throw Error(ErrorCode::Internal, "force degree above the basis's");
-  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(2 * n_ + extra_);
+  BoundaryVector rhs = BoundaryVector::Zero(2 * n_ + extra_);
   for (int d = 0; d < n_; ++d) {
     rhs(d) = left[d];
     rhs(n_ + d) = right[d];
@@ -187,7 +188,7 @@ UFactor EvenOdeBasis::solve(const double* left, const double* right, const std::
     if (i > 0) factorial *= static_cast<double>(i);
     rhs(2 * n_ + i) = factorial * force[i];
   }
-  const Eigen::VectorXcd amp = colScale_.asDiagonal() * lu_.solve(rowScale_.asDiagonal() * rhs);
+  const BoundaryVector amp = colScale_.asDiagonal() * lu_.solve(BoundaryVector(rowScale_.asDiagonal() * rhs));
   UFactor f;
   int col = 0;
   for (const Cluster& cl : clusters_) {

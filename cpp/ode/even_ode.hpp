@@ -21,6 +21,13 @@
 
 namespace pdesurf {
 
+// Boundary systems are small (2n + force degree + 1 <= 32): fixed-capacity matrices keep them
+// off the heap.
+constexpr int kMaxBoundarySystem = 32;
+using BoundaryMatrix = Eigen::Matrix<cplx, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxBoundarySystem, kMaxBoundarySystem>;
+using BoundaryVector = Eigen::Matrix<cplx, Eigen::Dynamic, 1, 0, kMaxBoundarySystem, 1>;
+using BoundaryScale = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxBoundarySystem, 1>;
+
 class EvenOdeBasis {
  public:
   // Throws Error(DegenerateOperator) when alpha[0] == 0 or a coefficient is not finite,
@@ -45,8 +52,8 @@ class EvenOdeBasis {
   int n_ = 0, extra_ = 0;
   std::vector<cplx> roots_;
   std::vector<Cluster> clusters_;
-  Eigen::VectorXd rowScale_, colScale_;
-  Eigen::PartialPivLU<Eigen::MatrixXcd> lu_;
+  BoundaryScale rowScale_, colScale_;
+  Eigen::PartialPivLU<BoundaryMatrix> lu_;
 };
 
 // Roots of Σ_k alpha[k] sigma^k rho^{n-k} = 0 in r with r² = rho (2n values, complex).

@@ -7,7 +7,7 @@
 
 #include "common/errors.hpp"
 #include "basis/general_function.hpp"
-#include "ode/even_ode.hpp"
+#include "ode/basis_cache.hpp"
 #include "pde/poly_in_v.hpp"
 
 namespace pdesurf {
@@ -69,26 +69,6 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   }
   return out;
 }
-
-// Bases for the two-point ODE, shared by every term (and component) with the same operator
-// coefficients and sigma: cos(wv) and sin(wv), or x and y with equal b, c, d, share one.
-class BasisCache {
- public:
-  const EvenOdeBasis& get(const std::vector<double>& alpha, double sigma, int forceDegree) {
-    for (const Entry& e : entries_)
-      if (e.sigma == sigma && e.alpha == alpha && e.basis->forceDegree() == forceDegree) return *e.basis;
-    entries_.push_back({alpha, sigma, std::make_unique<EvenOdeBasis>(alpha, sigma, forceDegree)});
-    return *entries_.back().basis;
-  }
-
- private:
-  struct Entry {
-    std::vector<double> alpha;
-    double sigma;
-    std::unique_ptr<EvenOdeBasis> basis;
-  };
-  std::vector<Entry> entries_;
-};
 
 // The polynomial terms ((v - c) w)^m of one frame: with s = (v - c) w, d²/dv² = w² d²/ds², so
 // the triangular system runs in s with alpha[j] scaled by w^{2j}.
@@ -170,11 +150,12 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
 
 }  // namespace
 
-SeparableSurface solveClosedForm(const PdeProblem& problem) {
+SeparableSurface solveClosedForm(const PdeProblem& problem, BasisCache* shared) {
   SeparableSurface s;
   s.v0 = problem.v0;
   s.v1 = problem.v1;
-  BasisCache cache;
+  BasisCache local;
+  BasisCache& cache = shared ? *shared : local;
   for (int c = 0; c < 3; ++c) {
     try {
       solveComponent(problem.component[c], cache, s.component[c]);

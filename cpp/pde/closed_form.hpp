@@ -9,8 +9,11 @@
 
 namespace pdesurf {
 
+class BasisCache;
+
 // Throws Error (DegenerateOperator, Singular, NonFinite, InvalidField) naming the component
 // and term at fault.
-SeparableSurface solveClosedForm(const PdeProblem& problem);
+// `cache` (optional) keeps the ODE bases between solves.
+SeparableSurface solveClosedForm(const PdeProblem& problem, BasisCache* cache = nullptr);
 
 }  // namespace pdesurf

@@ -40,6 +40,26 @@ double fallingFactorial(int top, int count) {
   return f;
 }
 
+// Inverse of the Hermite matrix of u^0..u^{2n-1} (rows: end, derivative order), per n, built
+// once: it is the same for every solve.
+const Eigen::MatrixXd& hermiteInverse(int n) {
+  static std::vector<Eigen::MatrixXd> cache;
+  if (static_cast<int>(cache.size()) <= n) cache.resize(n + 1);
+  Eigen::MatrixXd& inv = cache[n];
+  if (inv.size() == 0) {
+    Eigen::MatrixXd h(2 * n, 2 * n);
+    for (int end = 0; end < 2; ++end)
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < 2 * n; ++k) {
+          Poly mono(k + 1, 0.0);
+          mono[k] = 1.0;
+          h(end * n + i, k) = evalDerivative(mono, i, end);
+        }
+    inv = h.fullPivLu().inverse();
+  }
+  return inv;
+}
+
 }  // namespace
 
 std::vector<std::vector<double>> solvePolyInV(const std::vector<double>& alpha,
@@ -47,16 +67,7 @@ std::vector<std::vector<double>> solvePolyInV(const std::vector<double>& alpha,
                                               const std::vector<std::vector<double>>& force) {
   const int n = static_cast<int>(alpha.size()) - 1;
   const int top = static_cast<int>(data.size()) - 1;
-  // Hermite matrix of the monomials u^0..u^{2n-1}: rows (end, derivative order).
-  Eigen::MatrixXd h(2 * n, 2 * n);
-  for (int end = 0; end < 2; ++end)
-    for (int i = 0; i < n; ++i)
-      for (int k = 0; k < 2 * n; ++k) {
-        Poly mono(k + 1, 0.0);
-        mono[k] = 1.0;
-        h(end * n + i, k) = evalDerivative(mono, i, end);
-      }
-  const Eigen::FullPivLU<Eigen::MatrixXd> hermite(h);
+  const Eigen::MatrixXd& hermite = hermiteInverse(n);
 
   std::vector<Poly> g(top + 1);
   for (int m = top; m >= 0; --m) {
@@ -73,7 +84,7 @@ std::vector<std::vector<double>> solvePolyInV(const std::vector<double>& alpha,
     Eigen::VectorXd b(2 * n);
     for (int end = 0; end < 2; ++end)
       for (int i = 0; i < n; ++i) b(end * n + i) = data[m][end][i] - evalDerivative(particular, i, end);
-    const Eigen::VectorXd c = hermite.solve(b);
+    const Eigen::VectorXd c = hermite * b;
     if (particular.size() < static_cast<size_t>(2 * n)) particular.resize(2 * n, 0.0);
     for (int k = 0; k < 2 * n; ++k) particular[k] += c(k);
     g[m] = particular;

@@ -87,8 +87,9 @@ constexpr size_t kMaxSceneBytes = 1 << 20;
 // "patches[0].boundary.x.u0[1][0].coef: col 3: unknown parameter 'r9'".
 Scene parseScene(const std::string& jsonText);
 
-// Throws, message prefixed with the patch name. `method` overrides the patch's own.
-SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr);
-std::vector<SolvedPatch> solveScene(const Scene& scene);
+// Throws, message prefixed with the patch name. `method` overrides the patch's own; `cache`
+// (optional) keeps the closed form's ODE bases between solves (the page keeps one).
+SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr, BasisCache* cache = nullptr);
+std::vector<SolvedPatch> solveScene(const Scene& scene, BasisCache* cache = nullptr);
 
 }  // namespace pdesurf

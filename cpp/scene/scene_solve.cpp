@@ -69,7 +69,7 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 }  // namespace
 
-SolvedPatch solvePatch(const Patch& patch, const Method* method) {
+SolvedPatch solvePatch(const Patch& patch, const Method* method, BasisCache* cache) {
   try {
     if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}, {}, 0.0, 0.0};
     if (patch.kind == PatchKind::Bezier) {
@@ -80,16 +80,16 @@ SolvedPatch solvePatch(const Patch& patch, const Method* method) {
       out.normalMisfit = solver.normalMisfit(out.controlNet);
       return out;
     }
-    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method);
+    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method, cache);
     return {&patch, std::move(m.surface), m.used, {}, 0.0, 0.0};
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
   }
 }
 
-std::vector<SolvedPatch> solveScene(const Scene& scene) {
+std::vector<SolvedPatch> solveScene(const Scene& scene, BasisCache* cache) {
   std::vector<SolvedPatch> out;
-  for (const Patch& p : scene.patches) out.push_back(solvePatch(p));
+  for (const Patch& p : scene.patches) out.push_back(solvePatch(p, nullptr, cache));
   return out;
 }
 
