@@ -13,13 +13,19 @@ import { readHash, writeExampleIdToHash } from './state/hash.js';
 import { shareLink, shareMessage } from './state/share-link.js';
 import { decodeFragment } from './link/link-codec.js';
 import { installTestHooks } from './test-hooks.js';
+import { createBezierWiring } from './bezier-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
 let viewer = null;
-const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), () => viewer?.getCamera() ?? null);
+const bezier = createBezierWiring();
+const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), () => viewer?.getCamera() ?? null, {
+  overlays: () => viewer?.overlayCounts() ?? null,
+  editing: () => viewer?.editor.active() ?? null,
+  controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
+});
 
 function messageOf(err) {
   if (err && err.code) return `${err.code}: ${err.message}`;
@@ -35,7 +41,7 @@ function fail(err) {
 
 async function start() {
   try {
-    viewer = createViewer(document.getElementById('viewport'));
+    viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers);
   } catch (err) {
     fail(new Error(`cannot start WebGL: ${err.message}`));
     return;
@@ -100,6 +106,7 @@ async function start() {
         scheduler.request();
       },
     },
+    bezierHandlers: bezier.panelHandlers,
     onExpression: (patch, field, text) => {
       state.setExpression(patch, field, text);
       clearTimeout(typingTimer);
@@ -107,9 +114,13 @@ async function start() {
     },
   });
 
+  bezier.connect({ state, viewer, panel, scheduler, status });
+
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
     state.setScene(scene, exampleId);
+    viewer.resetOverlays();
+    bezier.reset();
     hooks.exampleId = exampleId;
     panel.showScene(scene);
     gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
@@ -191,6 +202,7 @@ async function start() {
     }
     const ms = performance.now() - t0;
     linkPending = false;
+    bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
     if (cameraPending) viewer.setCamera(cameraPending);
     else if (fitPending) viewer.fit();

@@ -15,7 +15,8 @@ export function checksumOf(arrays) {
   return total;
 }
 
-export function installTestHooks(getPositionArrays, getCamera = () => null) {
+/** extras: further read-only functions (the bezier overlays and editor, from main.js). */
+export function installTestHooks(getPositionArrays, getCamera = () => null, extras = {}) {
   const hooks = {
     ready: false, // true once the first mesh is drawn
     solveCount: 0, // solve attempts, failed ones included
@@ -26,6 +27,7 @@ export function installTestHooks(getPositionArrays, getCamera = () => null) {
     checksum: () => checksumOf(getPositionArrays()),
     vertexCount: () => getPositionArrays().reduce((n, a) => n + a.length / 3, 0),
     camera: () => getCamera(), // { position, target } as a link stores it
+    ...extras,
   };
   window.__pdesurf = hooks;
   return hooks;

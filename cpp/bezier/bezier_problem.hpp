@@ -3,8 +3,8 @@
 //   membrane (Eq. 1):   ½∫ |R_u|² + |R_v|² + λ[(R_u·N)² + (R_v·N)²] + γ|R - S|²   (one ring fixed)
 //   thin plate (Eq. 2): ½∫ |R_uu|² + 2|R_uv|² + |R_vv|² + λ[…] + γ|R - S|²         (two rings fixed)
 // under a guiding normal field N: continuous (a Bézier vector function of its own degree) or
-// discrete (unit normals on a sample grid with per-sample weights, Eqs. 5-7, where every
-// term of the energy becomes a sum over the samples). S is the initial surface, whose
+// discrete (unit normals on a sample grid with per-sample weights, Eqs. 5-7: the normal and
+// data terms become trapezoidal sums over the samples; the fairness term stays exact). S is the initial surface, whose
 // control net also supplies the fixed boundary control points.
 #pragma once
 #include <Eigen/Core>

@@ -38,10 +38,14 @@ Points gaussGrid(int qu, int qv) {
   return p;
 }
 
-Points sampleGrid(int np, int mp) {
+// The discrete normal field's sample grid with trapezoidal weights (½ on edges, ¼ at corners).
+Points trapezoidGrid(int np, int mp) {
   Points p;
   for (int i = 0; i <= np; ++i)
-    for (int j = 0; j <= mp; ++j) p.u.push_back(static_cast<double>(i) / np), p.v.push_back(static_cast<double>(j) / mp), p.w.push_back(1.0);
+    for (int j = 0; j <= mp; ++j) {
+      const double wi = (i == 0 || i == np) ? 0.5 : 1.0, wj = (j == 0 || j == mp) ? 0.5 : 1.0;
+      p.u.push_back(static_cast<double>(i) / np), p.v.push_back(static_cast<double>(j) / mp), p.w.push_back(wi * wj / (np * mp));
+    }
   return p;
 }
 
@@ -97,10 +101,14 @@ BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   const BezierNormalField& f = shape_.normals;
   const bool thin = shape_.energy == BezierEnergy::ThinPlate;
 
-  // Where the energy is evaluated: Gauss nodes exact for the fairness and mass terms, and
-  // for the normal term (continuous), or the sample grid (discrete).
-  const Points fair = f.discrete ? sampleGrid(f.np, f.mp) : gaussGrid(n + 1, m + 1);
-  const Points nrm = f.discrete ? fair : gaussGrid(n + f.n1, m + f.m1);
+  // Where the energy is evaluated. Fairness: always the exact integral (Gauss nodes). The
+  // normal and data terms: the exact integral for a continuous field, or, for a discrete one,
+  // the samples with trapezoidal weights (summing to 1, like the integral) times the
+  // per-sample weights. Seed 002's Eq. 5 sums every term, fairness included, with unit
+  // weights; that biased sum pins the surface only loosely (a flat square comes back with
+  // its control net 2.4 off the grid), so pdesurf keeps the fairness exact.
+  const Points fair = gaussGrid(n + 1, m + 1);
+  const Points nrm = f.discrete ? trapezoidGrid(f.np, f.mp) : gaussGrid(n + f.n1, m + f.m1);
   const VectorXd wFair = Eigen::Map<const VectorXd>(fair.w.data(), fair.w.size());
 
   MatrixXd F;  // fairness, K×K
@@ -110,10 +118,12 @@ BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   } else {
     F = gram(basisRows(n, m, fair.u, fair.v, 1, 0), wFair) + gram(basisRows(n, m, fair.u, fair.v, 0, 1), wFair);
   }
-  VectorXd wMass = wFair;
+  // Data term γ|R - S|²: where the normal term is evaluated (exact Gauss nodes for a continuous
+  // field: degree 2n ≤ 2(n + n1) - 1), with the per-sample γ weights for a discrete one.
+  VectorXd wMass = Eigen::Map<const VectorXd>(nrm.w.data(), nrm.w.size());
   if (f.discrete && !f.gammaWeight.empty())
     for (int q = 0; q < wMass.size(); ++q) wMass(q) *= f.gammaWeight[q];
-  const MatrixXd mass = gram(basisRows(n, m, fair.u, fair.v, 0, 0), wMass);
+  const MatrixXd mass = gram(basisRows(n, m, nrm.u, nrm.v, 0, 0), wMass);
 
   // Normal term with λ = 1: Σ_q w_q N_c N_d (a_u a_uᵀ + a_v a_vᵀ) per coordinate pair (c, d).
   const MatrixXd Au = basisRows(n, m, nrm.u, nrm.v, 1, 0), Av = basisRows(n, m, nrm.u, nrm.v, 0, 1);
@@ -166,8 +176,8 @@ BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   // the largest: Bernstein bases are badly conditioned at high degree (a 16×16 net's smallest
   // pivot is ~5e-14 of its largest) yet the surface they span is well determined.
   if (ldlt_.info() != Eigen::Success || !(D.minCoeff() > 1e-16 * std::max(1.0, D.maxCoeff())))
-    throw Error(ErrorCode::Singular, std::string("the energy has no unique minimiser (its matrix is singular)") +
-                                         (f.discrete ? ": use a finer normal sample grid than the degree" : ""));
+    throw Error(ErrorCode::Singular, "the energy has no unique minimiser (its matrix is singular to working precision): "
+                                     "reduce lambda or gamma, or the degree");
 }
 
 ControlNet BezierSolver::solve(const ControlNet& initial) const {

@@ -6,9 +6,10 @@
 // S (which changes only the right-hand side) costs a back-substitution
 // (geometry-central's pattern: a one-off function and a stateful solver).
 //
-// Exactness: the continuous integrals are Gauss-Legendre products in u and v with enough
-// points for their polynomial degree (fairness and mass: degree ≤ 2n in u, n + 1 points;
-// normal term: degree 2(n - 1) + 2 n1 in u, n + n1 points), hence exact up to rounding.
+// Exactness: the integrals are Gauss-Legendre products in u and v with enough points for
+// their polynomial degree (fairness: degree ≤ 2n in u, n + 1 points; normal and data terms:
+// degree ≤ 2(n - 1) + 2 n1 resp. 2n, n + n1 points), hence exact up to rounding. A discrete
+// normal field replaces the normal and data integrals by trapezoidal sums over its samples.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Cholesky>

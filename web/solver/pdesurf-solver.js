@@ -96,5 +96,16 @@ function normalisePatch(p) {
     out.method = String(p.method);
     out.methods = Array.from(p.methods || [], String);
   }
+  if (out.kind === 'bezier') {
+    // Variational Bézier patch: solved and initial nets (row-major, 3 per point), the
+    // guiding normals as arrows on the solved surface, and the solve's numbers.
+    out.netSize = Array.from(p.netSize || [], Number);
+    if (out.netSize.length !== 2) throw new PdesurfError('Internal', `patch ${p.name}: netSize is not [rows, cols]`);
+    out.controlNet = typed(p.controlNet, Float32Array, 'controlNet');
+    out.initialNet = typed(p.initialNet, Float32Array, 'initialNet');
+    out.normalOrigins = typed(p.normalOrigins, Float32Array, 'normalOrigins');
+    out.normalVectors = typed(p.normalVectors, Float32Array, 'normalVectors');
+    for (const key of ['energy', 'normalMisfit', 'lambda', 'gamma']) out[key] = Number(p[key]);
+  }
   return out;
 }

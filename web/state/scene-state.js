@@ -4,6 +4,10 @@ import { withParam, withOrder, orderOf, defaultParams } from './operator-edit.js
 import { createBoundaryStash } from './boundary-stash.js';
 import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate } from './expression-edit.js';
 import { addParameter, removeParameter } from './parameter-edit.js';
+import { setRegionWeights } from './region-weights.js';
+import { setControlPointCoordinate } from './control-net-edit.js';
+
+const BEZIER_NUMBERS = ['lambda', 'gamma'];
 
 export function createSceneState() {
   const stash = createBoundaryStash(); // derivative conditions dropped by order changes
@@ -89,6 +93,30 @@ export function createSceneState() {
       else if (field.kind === 'force') setForce(patch, field.axis, text);
       else if (field.kind === 'surface') setSurfaceCoordinate(patch, field.axis, text);
       else throw new Error(`unknown expression field ${JSON.stringify(field.kind)}`);
+    },
+
+    /** The bezier patch named `name`; throws if there is none. */
+    bezierPatch(name) {
+      const patch = state.patch(name);
+      if (patch.kind !== 'bezier') throw new Error(`patch ${JSON.stringify(name)} is not a bezier patch`);
+      return patch;
+    },
+
+    /** Set a bezier patch's λ or γ to a number (the page offers this only when the scene has a number). */
+    setBezierNumber(name, key, value) {
+      if (!BEZIER_NUMBERS.includes(key)) throw new Error(`expected lambda or gamma, not ${JSON.stringify(key)}`);
+      if (!Number.isFinite(value)) throw new Error(`${key} must be a finite number`);
+      state.bezierPatch(name)[key] = value;
+    },
+
+    /** Nine region weights (web/state/region-weights.js) into normals.lambda_weights. */
+    setRegionWeights(name, regions) {
+      setRegionWeights(state.bezierPatch(name), regions);
+    },
+
+    /** One coordinate of the initial net's point (i, j). */
+    setControlPointCoordinate(name, i, j, axis, value) {
+      setControlPointCoordinate(state.bezierPatch(name), i, j, axis, value);
     },
 
     addParameter(name, value) {

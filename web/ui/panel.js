@@ -1,11 +1,12 @@
 // The control panel (three's bundled lil-gui): the per-scene folders (parameters,
-// blends' operators, version-2 function fields), then sharing and grid resolution.
+// blends' operators, bezier patches, version-2 function fields), then sharing and grid resolution.
 // Scene folders are rebuilt whenever another scene opens; the gallery is elsewhere.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { buildParameterFolder } from './parameter-controls.js';
 import { buildOperatorFolders } from './operator-controls.js';
 import { buildExpressionFolders } from './expression-folders.js';
 import { buildShareFolder } from './share-controls.js';
+import { buildBezierFolders } from './bezier-controls.js';
 import { hasExpressions } from '../state/expression-edit.js';
 
 const GRID_MIN = 4;
@@ -14,9 +15,10 @@ const GRID_MAX = 256;
 /**
  * grid: {nu, nv} (edited in place); onGridChange(); onShare();
  * parameterHandlers: { onChange, onAdd(name, value) -> bool, onRemove(name) };
- * operatorHandlers: see buildOperatorFolders; onExpression(patch, field, text).
+ * operatorHandlers: see buildOperatorFolders; bezierHandlers: see buildBezierFolders;
+ * onExpression(patch, field, text).
  */
-export function createPanel({ grid, onGridChange, onShare, parameterHandlers, operatorHandlers, onExpression }) {
+export function createPanel({ grid, onGridChange, onShare, parameterHandlers, operatorHandlers, bezierHandlers, onExpression }) {
   const gui = new GUI({ title: 'pdesurf', width: 340 });
   gui.domElement.id = 'panel';
 
@@ -32,6 +34,7 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let scene = null;
   let paramFolder = null;
   let operators = null;
+  let bezier = null;
   let expressions = null;
   // Scene folders are appended as they are built; keep share and grid last.
   const fixedToEnd = () => {
@@ -58,8 +61,9 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       if (paramFolder) paramFolder.destroy();
       paramFolder = null;
       operators?.destroy();
+      bezier?.destroy();
       expressions?.destroy();
-      operators = expressions = null;
+      operators = bezier = expressions = null;
       buildParameters();
       fixedToEnd();
     },
@@ -73,10 +77,12 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
     showSolved(patches) {
       if (operators) {
         operators.update(patches);
+        bezier.update(patches);
         expressions?.update(patches);
         return;
       }
       operators = buildOperatorFolders(gui, patches, operatorHandlers);
+      bezier = buildBezierFolders(gui, scene, patches, bezierHandlers);
       if (hasExpressions(scene)) expressions = buildExpressionFolders(gui, scene, patches, onExpression);
       fixedToEnd();
     },
@@ -94,6 +100,21 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
     /** The grid object was replaced in place (a link's grid): show its values. */
     refreshGrid() {
       for (const c of gridCtrls) c.updateDisplay();
+    },
+
+    /** A control point was picked in the view: show it in its patch's editor. */
+    selectControlPoint(patchName, i, j) {
+      bezier?.select(patchName, i, j);
+    },
+
+    /** Tick or untick a patch's "pick & drag" toggle (one patch is edited at a time). */
+    setEditMode(patchName, on) {
+      bezier?.setEditMode(patchName, on);
+    },
+
+    /** The edited point moved (a drag in the view): show its numbers. */
+    refreshControlPoint(patchName) {
+      bezier?.refreshPoint(patchName);
     },
 
     showLinkLength(chars) {

@@ -1,7 +1,8 @@
 // Turning one solved patch (typed arrays from the solver) into a three.js mesh.
 import * as THREE from 'three';
 
-// Blends (kind "pde") in one colour, the primary surfaces they join in another.
+// Solved patches (kind "pde" blends and "bezier" variational surfaces) in one colour,
+// the primary surfaces they join in another.
 export const BLEND_COLOR = 0xe8913a;
 export const PRIMARY_COLOR = 0x7fa3c8;
 
@@ -34,7 +35,8 @@ export function geometryFromPatch(patch) {
 
 /** A mesh for one patch; userData keeps the name and kind for lookups and tests. */
 export function meshFromPatch(patch) {
-  const mesh = new THREE.Mesh(geometryFromPatch(patch), patch.kind === 'pde' ? materials.blend : materials.primary);
+  const solved = patch.kind === 'pde' || patch.kind === 'bezier';
+  const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
   mesh.userData = { kind: patch.kind, patchName: patch.name };
   return mesh;

@@ -1,13 +1,20 @@
-// The 3D view: renderer, camera, orbit controls, lights and the patch meshes.
+// The 3D view: renderer, camera, orbit controls, lights, the patch meshes and the
+// bezier overlays (nets, normals, the control-point editor).
 // Renders on demand (after a change or a camera move) to keep idle CPU at zero.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { meshFromPatch } from './patch-mesh.js';
 import { fitCameraToObject } from './fit-camera.js';
+import { createBezierLayer } from './bezier-layer.js';
+import { createControlPointEditor } from './control-point-editor.js';
 
 export const BACKGROUND = 0x20242b;
 
-export function createViewer(container) {
+/**
+ * container: the element to draw into. bezierEditing: { pointOf(patch, i, j) -> [x, y, z],
+ * onPick(patch, i, j), onMove(patch, i, j, [x, y, z]) } for the control-point editor.
+ */
+export function createViewer(container, bezierEditing) {
   const renderer = new THREE.WebGLRenderer({ antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(BACKGROUND, 1);
@@ -28,8 +35,16 @@ export function createViewer(container) {
   const surfaces = new THREE.Group();
   scene.add(surfaces);
 
+  // Overlays are kept out of `surfaces`: framing and the checksum see the patches only.
+  const overlays = new THREE.Group();
+  scene.add(overlays);
+  const bezier = createBezierLayer(overlays);
+
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.addEventListener('change', render);
+  const editor = createControlPointEditor({
+    scene, camera, dom: renderer.domElement, orbit: controls, layer: bezier, render, ...bezierEditing,
+  });
 
   function render() {
     renderer.render(scene, camera);
@@ -50,6 +65,7 @@ export function createViewer(container) {
     renderer,
     camera,
     controls,
+    editor,
 
     /** Replace the drawn patches with freshly solved ones. */
     setPatches(patches) {
@@ -58,7 +74,39 @@ export function createViewer(container) {
         m.geometry.dispose(); // materials are shared, keep them
       }
       for (const p of patches) surfaces.add(meshFromPatch(p));
+      bezier.update(patches);
+      editor.refresh();
       render();
+    },
+
+    /** Show or hide one overlay (solvedNet, initialNet, normals) of a bezier patch. */
+    setOverlay(patchName, key, on) {
+      bezier.setVisible(patchName, key, on);
+      render();
+    },
+
+    /** Edit the initial net of `patchName` at (i, j); null stops editing. */
+    editControlPoint(patchName, i, j) {
+      bezier.setEditing(patchName);
+      editor.setActive(patchName, i, j);
+    },
+
+    /** A new scene: no overlay shown, nothing being edited. */
+    resetOverlays() {
+      bezier.reset();
+      editor.setActive(null);
+    },
+
+    /** Visible overlays, for the tests: { solvedNets, initialNets, netPoints, arrows }. */
+    overlayCounts() {
+      return bezier.counts();
+    },
+
+    /** Where a world point appears in the page (client pixels), for the tests. */
+    screenOf(xyz) {
+      const v = new THREE.Vector3().fromArray(xyz).project(camera);
+      const rect = renderer.domElement.getBoundingClientRect();
+      return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
     },
 
     /** Frame everything drawn (on example change only: slider moves keep the view). */

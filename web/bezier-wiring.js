@@ -1,0 +1,95 @@
+// Wiring of the bezier patches' controls: the panel's folders and the view's
+// control-point editor both write the scene through the page state, re-solve, and keep
+// each other in step (a point picked in the view shows in the panel; a number typed in
+// the panel moves the marker). One patch's initial net is edited at a time.
+import { AXES, controlPointEntry } from './state/control-net-edit.js';
+
+/**
+ * Created before the viewer and the panel (they take its handlers); connect() them
+ * once they exist: { state, viewer, panel, scheduler, status }.
+ */
+export function createBezierWiring() {
+  let ctx = null;
+  let solved = new Map(); // patch name -> its last solved result (resolved numbers)
+  let editing = null; // the patch whose "pick & drag" is on
+
+  // The scene's numbers; an expression entry shows its last resolved value.
+  function pointOf(name, i, j) {
+    const patch = ctx.state.bezierPatch(name);
+    const s = solved.get(name);
+    return AXES.map((axis, a) => {
+      const v = controlPointEntry(patch, i, j, axis);
+      if (typeof v === 'number') return v;
+      return s ? s.initialNet[3 * (i * s.netSize[1] + j) + a] : 0;
+    });
+  }
+
+  // Every edit: write the scene, then one coalesced re-solve (the solver reports bad values).
+  function edit(write) {
+    try {
+      write();
+    } catch (err) {
+      ctx.status.error(err.message);
+      return false;
+    }
+    ctx.scheduler.request();
+    return true;
+  }
+
+  const viewerHandlers = {
+    pointOf,
+    onPick(name, i, j) {
+      ctx.panel.selectControlPoint(name, i, j);
+      ctx.viewer.editControlPoint(name, i, j);
+    },
+    // Only the coordinates the drag changed are written (an expression entry the gizmo
+    // did not move stays an expression), rounded as the examples are: short links.
+    onMove(name, i, j, xyz) {
+      const old = pointOf(name, i, j);
+      const write = () => AXES.forEach((axis, a) => {
+        if (xyz[a] !== old[a]) ctx.state.setControlPointCoordinate(name, i, j, axis, Math.round(xyz[a] * 1e6) / 1e6);
+      });
+      if (edit(write)) ctx.panel.refreshControlPoint(name);
+    },
+  };
+
+  const panelHandlers = {
+    pointOf,
+    onOverlay: (name, key, on) => ctx.viewer.setOverlay(name, key, on),
+    onNumber: (name, key, value) => edit(() => ctx.state.setBezierNumber(name, key, value)),
+    onRegionWeights: (name, regions) => edit(() => ctx.state.setRegionWeights(name, regions)),
+    onEditMode(name, on, { i, j }) {
+      if (on && editing && editing !== name) ctx.panel.setEditMode(editing, false);
+      if (on) editing = name;
+      else if (editing === name) editing = null;
+      if (on) ctx.viewer.editControlPoint(name, i, j);
+      else if (!editing) ctx.viewer.editControlPoint(null);
+    },
+    onSelect(name, i, j) {
+      if (editing === name) ctx.viewer.editControlPoint(name, i, j);
+    },
+    onCoordinate(name, i, j, axis, value) {
+      if (edit(() => ctx.state.setControlPointCoordinate(name, i, j, axis, value)) && editing === name) {
+        ctx.viewer.editControlPoint(name, i, j); // the marker follows the typed number
+      }
+    },
+  };
+
+  return {
+    viewerHandlers,
+    panelHandlers,
+    pointOf,
+    connect(parts) {
+      ctx = parts;
+    },
+    /** Before the viewer draws a solve: keep its resolved numbers for pointOf. */
+    solvedPatches(patches) {
+      solved = new Map(patches.filter((p) => p.kind === 'bezier').map((p) => [p.name, p]));
+    },
+    /** A new scene: nothing edited. */
+    reset() {
+      solved = new Map();
+      editing = null;
+    },
+  };
+}
