@@ -57,23 +57,24 @@ VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N) {
   return out;
 }
 
-VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N) {
-  const double c = 0.5 * (v0 + v1), w = 2.0 / (v1 - v0);
-  // Values at the Chebyshev points, then coefficients of T_k, then powers of s.
-  std::vector<double> val(N + 1), cheb(N + 1, 0.0);
-  for (int j = 0; j <= N; ++j) {
-    const double s = std::cos(M_PI * (j + 0.5) / (N + 1));
-    val[j] = expansionValue(f, c + s / w);
-    if (!std::isfinite(val[j])) requireFinite(f, c + s / w);
-  }
+namespace {
+
+// Coefficients of T_0..T_N interpolating the values at the Chebyshev points cos(π(j+½)/(N+1)).
+std::vector<double> chebyshevCoefficients(const std::vector<double>& values) {
+  const int N = static_cast<int>(values.size()) - 1;
+  std::vector<double> cheb(N + 1, 0.0);
   for (int k = 0; k <= N; ++k) {
     double sum = 0.0;
-    for (int j = 0; j <= N; ++j) sum += val[j] * std::cos(M_PI * k * (j + 0.5) / (N + 1));
+    for (int j = 0; j <= N; ++j) sum += values[j] * std::cos(M_PI * k * (j + 0.5) / (N + 1));
     cheb[k] = sum * (k == 0 ? 1.0 : 2.0) / (N + 1);
   }
-  // Σ cheb[k] T_k(s) in powers of s, with T_k = 2 s T_{k-1} - T_{k-2}.
-  std::vector<double> power(N + 1, 0.0);
-  std::vector<double> older(N + 1, 0.0), old(N + 1, 0.0);  // T_{k-2}, T_{k-1}
+  return cheb;
+}
+
+// Σ cheb[k] T_k(s) in powers of s, with T_k = 2 s T_{k-1} - T_{k-2}.
+std::vector<double> chebyshevToPowers(const std::vector<double>& cheb) {
+  const int N = static_cast<int>(cheb.size()) - 1;
+  std::vector<double> power(N + 1, 0.0), older(N + 1, 0.0), old(N + 1, 0.0);  // T_{k-2}, T_{k-1}
   for (int k = 0; k <= N; ++k) {
     std::vector<double> t(N + 1, 0.0);
     if (k == 0) t[0] = 1.0;
@@ -84,6 +85,20 @@ VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N
     older.swap(old);
     old.swap(t);
   }
+  return power;
+}
+
+}  // namespace
+
+VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N) {
+  const double c = 0.5 * (v0 + v1), w = 2.0 / (v1 - v0);
+  std::vector<double> val(N + 1);
+  for (int j = 0; j <= N; ++j) {
+    const double s = std::cos(M_PI * (j + 0.5) / (N + 1));
+    val[j] = expansionValue(f, c + s / w);
+    if (!std::isfinite(val[j])) requireFinite(f, c + s / w);
+  }
+  const std::vector<double> power = chebyshevToPowers(chebyshevCoefficients(val));
   VExpansion out;
   for (int d = 0; d <= N; ++d) {
     VFunction g{Family::Poly, w, d};
@@ -123,23 +138,9 @@ std::vector<ForceTerm> approximateForce(const GeneralForce& f, double v0, double
   std::vector<ForceTerm> out;
   for (size_t k = 0; k < basis.size(); ++k) {
     // Chebyshev coefficients in s = 2u - 1, then powers of s, then powers of u.
-    std::vector<double> cheb(Du + 1, 0.0);
-    for (int m = 0; m <= Du; ++m) {
-      double sum = 0.0;
-      for (int i = 0; i <= Du; ++i) sum += coefficients[i][k] * std::cos(M_PI * m * (i + 0.5) / (Du + 1));
-      cheb[m] = sum * (m == 0 ? 1.0 : 2.0) / (Du + 1);
-    }
-    std::vector<double> inS(Du + 1, 0.0), older(Du + 1, 0.0), old(Du + 1, 0.0);
-    for (int m = 0; m <= Du; ++m) {
-      std::vector<double> t(Du + 1, 0.0);
-      if (m == 0) t[0] = 1.0;
-      else if (m == 1) t[1] = 1.0;
-      else
-        for (int d = 0; d <= Du; ++d) t[d] = (d > 0 ? 2 * old[d - 1] : 0.0) - older[d];
-      for (int d = 0; d <= Du; ++d) inS[d] += cheb[m] * t[d];
-      older.swap(old);
-      old.swap(t);
-    }
+    std::vector<double> values(Du + 1);
+    for (int i = 0; i <= Du; ++i) values[i] = coefficients[i][k];
+    const std::vector<double> inS = chebyshevToPowers(chebyshevCoefficients(values));
     std::vector<double> inU(Du + 1, 0.0);  // (2u - 1)^d expanded
     for (int d = 0; d <= Du; ++d) {
       double binom = 1.0;

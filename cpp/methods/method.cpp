@@ -90,15 +90,9 @@ MethodSolution solveWithMethod(const PdeProblem& p, const Method& m, BasisCache*
         out.used.kind = MethodKind::Closed;
         return out;
       }
-      PdeProblem restored;
-      if (restoreFamilies(p, &restored)) {
-        out.surface = solveClosedForm(restored, cache);
-        out.used.kind = MethodKind::Closed;
-        return out;
-      }
+      // The reference falls back to the closed form itself when every general term has one.
       out = solveReference(p, 1e-9, cache);
-      out.used.kind = MethodKind::Modal;
-      out.used.terms = out.referenceTerms;
+      if (out.used.kind == MethodKind::Reference) out.used = Method{MethodKind::Modal, out.referenceTerms};
       return out;
     }
     case MethodKind::Closed: {
