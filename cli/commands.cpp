@@ -29,7 +29,12 @@ int runSample(const Options& o, std::ostream& out) {
     }
     return 0;
   }
-  const GridSamples g = sampleGrid(solved.surface, o.nu, o.nv);
+  GridSamples g;
+  try {
+    g = sampleGrid(solved.surface, o.nu, o.nv);
+  } catch (const Error& e) {
+    throw Error(e.code(), "patch '" + patch->name + "': " + e.what());
+  }
   out << "u,v,x,y,z\n";
   for (int j = 0; j <= g.nv; ++j)
     for (int i = 0; i <= g.nu; ++i) {
@@ -49,7 +54,12 @@ int runExport(const Options& o) {
   size_t base = 1;  // OBJ indices are 1-based and global across objects
   char line[160];
   for (const SolvedPatch& sp : solved) {
-    const Mesh m = tessellate(sp.surface, o.nu, o.nv);
+    Mesh m;
+    try {
+      m = tessellate(sp.surface, o.nu, o.nv);
+    } catch (const Error& e) {
+      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+    }
     f << "o " << sp.patch->name << "\n";
     for (size_t k = 0; k < m.vertexCount(); ++k) {
       std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", m.positions[3 * k], m.positions[3 * k + 1], m.positions[3 * k + 2]);

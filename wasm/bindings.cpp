@@ -105,7 +105,11 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
     for (size_t k = 0; k < solved.size(); ++k) {
       const SolvedPatch& sp = solved[k];
       Mesh& m = meshes[k];
-      tessellateInto(sp.surface, nu, nv, m);
+      try {
+        tessellateInto(sp.surface, nu, nv, m);
+      } catch (const Error& e) {
+        throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+      }
       val p = val::object();
       p.set("name", sp.patch->name);
       p.set("kind", sp.patch->kindName);

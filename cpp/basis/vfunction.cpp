@@ -1,6 +1,7 @@
 #include "basis/vfunction.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "basis/general_function.hpp"
 
@@ -37,6 +38,18 @@ double VFunction::eval(double v, int k) const {
     case Family::General: break;
   }
   return 0.0;
+}
+
+std::string describeFunction(const VFunction& g) {
+  if (g.isGeneral()) return g.general->text();
+  char buf[64];
+  if (g.isPoly()) {
+    if (g.c == 0 && g.w == 1) std::snprintf(buf, sizeof buf, "v^%d", g.n);
+    else std::snprintf(buf, sizeof buf, "((v - %g)*%g)^%d", g.c, g.w, g.n);
+  } else {
+    std::snprintf(buf, sizeof buf, "%s(%g*v)", familyName(g.family), g.w);
+  }
+  return buf;
 }
 
 const char* familyName(Family f) {

@@ -32,6 +32,8 @@ struct VFunction {
 };
 
 const char* familyName(Family f);
+// For messages: "cos(3*v)", "v^2", or a general function's own text.
+std::string describeFunction(const VFunction& g);
 bool familyFromName(const std::string& name, Family* out);
 
 }  // namespace pdesurf

@@ -16,18 +16,6 @@ namespace {
 
 const char* kAxis[3] = {"x", "y", "z"};
 
-std::string describe(const VFunction& g) {
-  std::ostringstream s;
-  if (g.isGeneral()) {
-    s << g.general->text();
-  } else if (g.isPoly()) {
-    s << "v^" << g.n;
-  } else {
-    s << familyName(g.family) << "(" << g.w << "*v)";
-  }
-  return s.str();
-}
-
 // Everything attached to one v-basis function: its boundary values
 // (values[end * n + i] = coefficient in ∂^i X/∂u^i at u = end) and its force polynomial in u.
 struct Grouped {
@@ -40,7 +28,7 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   std::vector<Grouped> out;
   auto refuse = [](const VFunction& g) {
     if (g.isGeneral())
-      throw Error(ErrorCode::InvalidField, "'" + describe(g) + "' has no closed form: use the method auto, modal or pseudo-navier");
+      throw Error(ErrorCode::InvalidField, "'" + describeFunction(g) + "' has no closed form: use the method auto, modal or pseudo-navier");
   };
   for (const VExpansion& e : p.left)
     for (const VTerm& t : e) refuse(t.g);
@@ -127,7 +115,7 @@ void solveComponent(const ComponentProblem& p, BasisCache& cache, std::vector<Se
       const EvenOdeBasis& basis = cache.get(p.alpha, gr.g.sigma(), static_cast<int>(gr.force.size()) - 1);
       terms.push_back({gr.g, basis.solve(gr.values.data(), gr.values.data() + n, gr.force)});
     } catch (const Error& e) {
-      throw Error(e.code(), "term " + describe(gr.g) + ": " + e.what());
+      throw Error(e.code(), "term " + describeFunction(gr.g) + ": " + e.what());
     }
   }
 

@@ -31,17 +31,20 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
     t.uTab[c].assign(static_cast<size_t>(nu + 1) * 2 * T, 0.0);
     t.vTab[c].assign(static_cast<size_t>(nv + 1) * 2 * T, 0.0);
     for (int k = 0; k < T; ++k) {
-      terms[k].G.tabulate(t.u.data(), nu + 1, 1, t.uTab[c].data() + static_cast<size_t>(2 * k) * (nu + 1));
+      double* uk = t.uTab[c].data() + static_cast<size_t>(2 * k) * (nu + 1);
+      terms[k].G.tabulate(t.u.data(), nu + 1, 1, uk);
+      bool finite = true;
+      for (int i = 0; i < 2 * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
       for (int j = 0; j <= nv; ++j) {
-        t.vTab[c][j * 2 * T + 2 * k] = terms[k].g.eval(t.v[j], 0);
-        t.vTab[c][j * 2 * T + 2 * k + 1] = terms[k].g.eval(t.v[j], 1);
+        const double g0 = terms[k].g.eval(t.v[j], 0), g1 = terms[k].g.eval(t.v[j], 1);
+        t.vTab[c][j * 2 * T + 2 * k] = g0;
+        t.vTab[c][j * 2 * T + 2 * k + 1] = g1;
+        finite = finite && std::isfinite(g0) && std::isfinite(g1);
       }
+      if (!finite)
+        throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": term " + describeFunction(terms[k].g) +
+                                              " is not finite on the grid (v from " + std::to_string(s.v0) + " to " + std::to_string(s.v1) + ")");
     }
-    for (double x : t.uTab[c])
-      if (!std::isfinite(x)) throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": a u-factor overflows on the grid");
-    for (double x : t.vTab[c])
-      if (!std::isfinite(x))
-        throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": a v-basis function overflows on the v-range");
   }
   for (int c = 0; c < 3; ++c)
     if (s.pointwise[c])
