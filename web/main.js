@@ -9,11 +9,11 @@ import { createStatus } from './ui/status.js';
 import { createSceneState } from './state/scene-state.js';
 import { createSolveScheduler } from './state/solve-scheduler.js';
 import { loadExampleIndex, loadExampleScene } from './state/examples.js';
-import { readHash, writeExampleIdToHash } from './state/hash.js';
-import { shareLink, shareMessage } from './state/share-link.js';
+import { readHash, writeExampleIdToHash, markHashShown, hashIsShown } from './state/hash.js';
 import { decodeFragment } from './link/link-codec.js';
 import { installTestHooks } from './test-hooks.js';
 import { createBezierWiring } from './bezier-wiring.js';
+import { createShareWiring } from './share-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
@@ -59,6 +59,7 @@ async function start() {
   let fitPending = false; // frame the camera on the first good solve of an example
   let cameraPending = null; // or restore a shared link's camera instead
   let linkPending = false; // a link's scene that has not solved yet
+  let opening = false; // the next solve opens a scene (not a user's change)
   let notice = null; // shown instead of the solve summary once (e.g. a bad link)
   let loadToken = 0; // a slower fetch or decode of an earlier pick must not win
   let typingTimer = 0;
@@ -67,7 +68,7 @@ async function start() {
   const panel = createPanel({
     grid: state.grid,
     onGridChange: () => scheduler.request(),
-    onShare: () => copyLink(),
+    onShare: () => share.copy(),
     parameterHandlers: {
       onChange: () => scheduler.request(),
       onAdd: (name, value) => {
@@ -115,9 +116,12 @@ async function start() {
   });
 
   bezier.connect({ state, viewer, panel, scheduler, status });
+  const share = createShareWiring({ viewer, panel, status, hooks });
 
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
+    share.opening();
+    opening = true;
     state.setScene(scene, exampleId);
     viewer.resetOverlays();
     bezier.reset();
@@ -147,6 +151,7 @@ async function start() {
       return;
     }
     if (token !== loadToken) return;
+    share.opening(); // an encode still in flight must not overwrite the example's hash
     writeExampleIdToHash(entry.id);
     const src = entry.source ? [entry.source.paper, entry.source.figure].filter(Boolean).join(', ') : '';
     showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title });
@@ -176,6 +181,7 @@ async function start() {
   }
 
   function openFromHash() {
+    markHashShown();
     const h = readHash();
     if (h.kind === 'state') return openLink(h.text);
     return openExample(h.kind === 'example' ? h.id : examples[0].id);
@@ -184,10 +190,13 @@ async function start() {
   function solveNow() {
     if (!state.scene) return;
     hooks.solveCount++;
+    const edited = !opening;
+    opening = false;
+    const text = state.text();
     const t0 = performance.now();
     let result;
     try {
-      result = solver.solve(state.text(), state.grid);
+      result = solver.solve(text, state.grid);
     } catch (err) {
       if (linkPending) {
         // The link decoded but its scene does not solve: nothing good to keep on screen.
@@ -218,26 +227,13 @@ async function start() {
     if (notice) status.error(notice);
     else status.info(summary);
     notice = null;
+    share.solved(text, state.grid, summary, edited);
   }
 
-  async function copyLink() {
-    if (!state.scene) return;
-    try {
-      const shared = await shareLink({ scene: state.scene, grid: { ...state.grid }, camera: viewer.getCamera() });
-      hooks.lastLink = shared.url;
-      panel.showLinkLength(shared.chars);
-      if (shared.long) status.warn(shareMessage(shared));
-      else status.info(shareMessage(shared));
-    } catch (err) {
-      status.error(`cannot make a link: ${messageOf(err)}`);
-    }
-  }
-
-  // A link pasted into the address bar or history navigation opens what it names.
+  // A link pasted into the address bar or history navigation opens what it names;
+  // the page's own writes (replaceState fires no hashchange anyway) never re-open.
   window.addEventListener('hashchange', () => {
-    const h = readHash();
-    if (h.kind === 'example' && h.id === state.exampleId) return;
-    openFromHash();
+    if (!hashIsShown()) openFromHash();
   });
 
   await openFromHash();

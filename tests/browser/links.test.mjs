@@ -142,6 +142,10 @@ describe('shared links', { skip }, () => {
     for (let i = 0; i < 40; i++) big.parameters[`q${i}`] = { value: 0, min: -1, max: 1, label: noise(190) };
     const page = await h.open(`/web/#${await encodeState({ scene: big })}`);
     assert.equal((await hooks(page)).notice, null);
+    // Shown live, before any copy.
+    assert.match(await page.locator('#panel [data-share="length"] input').inputValue(), /> 8000/);
+    assert.match(await page.locator('#status').textContent(), /over 8000/);
+    await shoot(page, 'link-long-live.png');
     await page.locator('#panel [data-share="copy"] button').click();
     await page.waitForFunction(() => window.__pdesurf.lastLink, null, { timeout: 10_000 });
     const chars = (await hooks(page)).lastLink.length;

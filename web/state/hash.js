@@ -1,6 +1,10 @@
 // The URL hash says what the page opens: "#s=…" a shared page state (web/link/),
 // "#example=<id>" an example, nothing the default example.
 
+// The hash that matches what the page shows (written by it, or opened from it): a
+// hashchange to it is the page's own doing and must not re-open the state.
+let shown = null;
+
 /** { kind: 'state', text } | { kind: 'example', id } | { kind: 'none' } */
 export function readHash(hash = location.hash) {
   const body = hash.replace(/^#/, '');
@@ -17,17 +21,24 @@ export function exampleIdFromHash(hash = location.hash) {
   return h.kind === 'example' ? h.id : null;
 }
 
+/** The page now shows what the current hash names. */
+export function markHashShown() {
+  shown = location.hash;
+}
+
+/** True when the current hash is the one the page shows (nothing new to open). */
+export function hashIsShown() {
+  return location.hash === shown;
+}
+
 /** Write the id into the hash without adding a history entry or firing hashchange. */
 export function writeExampleIdToHash(id) {
   history.replaceState(null, '', '#' + new URLSearchParams({ example: id }).toString());
+  markHashShown();
 }
 
 /** Write a shared-state link ("s=1.…") into the hash, the same way. */
 export function writeLinkToHash(link) {
   history.replaceState(null, '', '#' + link);
-}
-
-/** The full URL the page has with `link` as its hash. */
-export function urlWithHash(link) {
-  return `${location.origin}${location.pathname}${location.search}#${link}`;
+  markHashShown();
 }

@@ -1,9 +1,7 @@
-// "Copy link": encode the page state, put it in the address bar (no history entry,
-// no hashchange) and on the clipboard when the browser lets us. The clipboard is
-// optional: it is missing on plain http, denied without focus, absent in headless
-// tests, so its failure only changes the message.
-import { encodeState } from '../link/link-codec.js';
-import { writeLinkToHash, urlWithHash } from './hash.js';
+// "Copy link": the address bar already holds the page state (web/state/hash-sync.js),
+// so the button only copies it. The clipboard is optional: it is missing on plain
+// http, denied without focus, absent in headless tests, so its failure only changes
+// the message.
 
 // Past this, chat and mail tools and some servers start cutting URLs.
 export const LONG_LINK = 8000;
@@ -13,11 +11,8 @@ function within(promise, ms) {
   return Promise.race([promise, new Promise((_, reject) => setTimeout(() => reject(new Error('timeout')), ms))]);
 }
 
-/** state: { scene, grid, camera } -> { link, url, chars, copied, long } */
-export async function shareLink(state, clipboard = globalThis.navigator?.clipboard) {
-  const link = await encodeState(state);
-  writeLinkToHash(link);
-  const url = urlWithHash(link);
+/** url -> { url, chars, copied, long } */
+export async function copyLink(url, clipboard = globalThis.navigator?.clipboard) {
   let copied = false;
   if (clipboard && typeof clipboard.writeText === 'function') {
     try {
@@ -27,12 +22,17 @@ export async function shareLink(state, clipboard = globalThis.navigator?.clipboa
       copied = false;
     }
   }
-  return { link, url, chars: url.length, copied, long: url.length > LONG_LINK };
+  return { url, chars: url.length, copied, long: url.length > LONG_LINK };
 }
 
-/** The status-line sentence for a shareLink result. */
+/** The warning for a link of `chars` characters, or '' when it is short enough. */
+export function longLinkWarning(chars) {
+  return chars > LONG_LINK ? `the link has ${chars} characters, over ${LONG_LINK}, which some tools cut` : '';
+}
+
+/** The status-line sentence for a copyLink result. */
 export function shareMessage({ chars, copied, long }) {
-  const where = copied ? 'link copied to the clipboard and shown in the address bar' : 'link in the address bar (copy it from there)';
+  const where = copied ? 'link copied to the clipboard' : 'the link is in the address bar (copy it from there)';
   const warning = long ? `: over ${LONG_LINK}, which some tools cut` : '';
   return `${where}, ${chars} characters${warning}`;
 }

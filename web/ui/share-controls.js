@@ -1,6 +1,6 @@
-// The "Share" folder: a "copy link" button and a read-only line with the link's
-// length, flagged once it passes LONG_LINK characters (chat and mail tools, and some
-// servers, cut longer URLs). DOM hooks: data-share="copy" / "length".
+// The "Share" folder: a "copy link" button and a read-only line with the length of
+// the link in the address bar (kept current), flagged past LONG_LINK characters (chat
+// and mail tools, and some servers, cut longer URLs). DOM hooks: data-share="copy" / "length".
 import { escapeHtml } from './html-text.js';
 import { LONG_LINK } from '../state/share-link.js';
 
