@@ -94,9 +94,10 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
   try {
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
-    // Kept between calls: a slider that moves a trimline reuses every ODE basis.
-    static BasisCache bases;
-    const auto solved = solveScene(scene, &bases);
+    // Kept between calls: a slider that moves a trimline reuses every ODE basis, a drag of a
+    // Bézier control point its factorisation.
+    static SolveCache cache;
+    const auto solved = solveScene(scene, &cache);
     // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
     // buffers, uvs and indices are reused instead of rebuilt.
     static std::vector<Mesh> meshes;

@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "bezier/bezier_problem.hpp"
+#include "bezier/bezier_solver_cache.hpp"
 #include "methods/method.hpp"
+#include "ode/basis_cache.hpp"
 #include "pde/pde_problem.hpp"
 #include "surface/separable_surface.hpp"
 
@@ -87,9 +88,15 @@ constexpr size_t kMaxSceneBytes = 1 << 20;
 // "patches[0].boundary.x.u0[1][0].coef: col 3: unknown parameter 'r9'".
 Scene parseScene(const std::string& jsonText);
 
-// Throws, message prefixed with the patch name. `method` overrides the patch's own; `cache`
-// (optional) keeps the closed form's ODE bases between solves (the page keeps one).
-SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr, BasisCache* cache = nullptr);
-std::vector<SolvedPatch> solveScene(const Scene& scene, BasisCache* cache = nullptr);
+// What repeated solves can reuse: the closed form's ODE bases and the Bézier factorisations.
+// The page keeps one between calls; one-off solves pass none.
+struct SolveCache {
+  BasisCache bases;
+  BezierSolverCache bezier;
+};
+
+// Throws, message prefixed with the patch name. `method` overrides the patch's own.
+SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr, SolveCache* cache = nullptr);
+std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache = nullptr);
 
 }  // namespace pdesurf

@@ -1,3 +1,4 @@
+#include <memory>
 #include <string>
 
 #include "common/errors.hpp"
@@ -69,25 +70,27 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 }  // namespace
 
-SolvedPatch solvePatch(const Patch& patch, const Method* method, BasisCache* cache) {
+SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cache) {
   try {
     if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}, {}, 0.0, 0.0};
     if (patch.kind == PatchKind::Bezier) {
-      const BezierSolver solver(patch.bezier);
+      std::unique_ptr<BezierSolver> own;
+      if (!cache) own = std::make_unique<BezierSolver>(patch.bezier);
+      const BezierSolver& solver = cache ? cache->bezier.get(patch.bezier) : *own;
       SolvedPatch out{&patch, {}, Method{}, solver.solve(patch.bezier.initial), 0.0, 0.0};
       out.surface = bezierToSeparable(patch.bezier.n, patch.bezier.m, out.controlNet);
       out.energy = solver.energy(out.controlNet, patch.bezier.initial);
       out.normalMisfit = solver.normalMisfit(out.controlNet);
       return out;
     }
-    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method, cache);
+    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method, cache ? &cache->bases : nullptr);
     return {&patch, std::move(m.surface), m.used, {}, 0.0, 0.0};
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
   }
 }
 
-std::vector<SolvedPatch> solveScene(const Scene& scene, BasisCache* cache) {
+std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache) {
   std::vector<SolvedPatch> out;
   for (const Patch& p : scene.patches) out.push_back(solvePatch(p, nullptr, cache));
   return out;

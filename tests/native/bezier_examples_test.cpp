@@ -14,10 +14,6 @@ using namespace pdesurf::testing;
 
 namespace {
 
-Eigen::Vector3d unitNormal(const SeparableSurface& s, double u, double v) {
-  return evalPoint(s, u, v, 1, 0).cross(evalPoint(s, u, v, 0, 1)).normalized();
-}
-
 double degreesBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::acos(std::min(1.0, std::abs(a.dot(b)))) * 180.0 / M_PI;
 }

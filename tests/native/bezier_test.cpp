@@ -7,6 +7,7 @@
 
 #include "bezier/bernstein.hpp"
 #include "bezier/bezier_solver.hpp"
+#include "bezier/bezier_solver_cache.hpp"
 #include "common/errors.hpp"
 
 using namespace pdesurf;
@@ -204,4 +205,15 @@ TEST_CASE("bezier: a discrete field keeps the control net regular (exact fairnes
   p.normals.np = p.normals.mp = 16;
   p.normals.vectors.assign(17 * 17, Eigen::Vector3d(0, 0, 1));
   CHECK(maxDiff(solveBezier(p), flat) < 1e-10);  // was 2.4 with Eq. 5's unit-weight fairness sum
+}
+
+TEST_CASE("bezier: the solver cache reuses a factorisation only for an identical shape") {
+  BezierSolverCache cache;
+  BezierProblem p = problem(6, 6, BezierEnergy::Membrane, bumpy(6, 6), 10.0, 1.0);
+  const BezierSolver* first = &cache.get(p);
+  p.initial[10].z() += 0.3;  // a drag of S: same matrix
+  CHECK(&cache.get(p) == first);
+  CHECK(maxDiff(cache.get(p).solve(p.initial), solveBezier(p)) < 1e-13);
+  p.lambda = 11.0;  // a different matrix
+  CHECK(&cache.get(p) != first);
 }

@@ -13,19 +13,6 @@
 using namespace pdesurf;
 using namespace pdesurf::testing;
 
-namespace {
-
-// Unit normal; where X_u vanishes (a blend that leaves its trimline with zero speed, seed 003
-// Eq. 14) the limit along u is X_uu × X_v.
-Eigen::Vector3d unitNormal(const SeparableSurface& s, double u, double v) {
-  Eigen::Vector3d xu = evalPoint(s, u, v, 1, 0);
-  const Eigen::Vector3d xv = evalPoint(s, u, v, 0, 1);
-  if (xu.norm() < 1e-12 * xv.norm()) xu = evalPoint(s, u, v, 2, 0);
-  return xu.cross(xv).normalized();
-}
-
-}  // namespace
-
 TEST_CASE("examples: every indexed example solves, meets its trimlines and tessellates") {
   const auto index = nlohmann::json::parse(readText(examplePath("index.json")));
   REQUIRE(index["examples"].size() >= 3);

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string>
 
+#include <Eigen/Geometry>
+
 #include "pde/pde_problem.hpp"
 #include "surface/separable_surface.hpp"
 
@@ -84,6 +86,15 @@ inline double pdeResidual(const PdeProblem& p, const SeparableSurface& s) {
       }
   }
   return worst;
+}
+
+// Unit normal; where X_u vanishes (a blend that leaves its trimline with zero speed, seed 003
+// Eq. 14) the limit along u is X_uu × X_v.
+inline Eigen::Vector3d unitNormal(const SeparableSurface& s, double u, double v) {
+  Eigen::Vector3d xu = evalPoint(s, u, v, 1, 0);
+  const Eigen::Vector3d xv = evalPoint(s, u, v, 0, 1);
+  if (xu.norm() < 1e-12 * xv.norm()) xu = evalPoint(s, u, v, 2, 0);
+  return xu.cross(xv).normalized();
 }
 
 }  // namespace pdesurf::testing
