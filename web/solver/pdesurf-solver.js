@@ -51,11 +51,17 @@ export async function loadSolver(opts = {}) {
   };
 }
 
-function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
+function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false } = {}) {
   const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  const analysis = Boolean(curvature) || Boolean(joins);
+  if (analysis && typeof Module.solveSceneWith !== 'function') {
+    throw new PdesurfError('Load', 'this solver module has no analysis (solveSceneWith): rebuild the wasm module');
+  }
   let res;
   try {
-    res = Module.solveScene(text, nu, nv);
+    res = analysis
+      ? Module.solveSceneWith(text, nu, nv, { curvature: Boolean(curvature), joins: Boolean(joins) })
+      : Module.solveScene(text, nu, nv);
   } catch (err) {
     // Should not happen (the binding catches), but never let a raw throw escape.
     const msg = err instanceof Error ? err.message : `solver threw ${String(err)}`;
@@ -66,7 +72,27 @@ function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
     const e = res.error || {};
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown solver error'));
   }
-  return { patches: Array.from(res.patches || [], normalisePatch) };
+  const out = { patches: Array.from(res.patches || [], normalisePatch) };
+  if (joins) out.report = normaliseReport(res.report);
+  return out;
+}
+
+// The join certificate (docs/analysis.md): plain numbers, booleans and strings only.
+function normaliseReport(r) {
+  if (!r || typeof r !== 'object') throw new PdesurfError('Internal', 'the solver returned no join report');
+  const joins = Array.from(r.joins || [], (j) => ({
+    patch: String(j.patch), end: String(j.end), surface: String(j.surface), edge: String(j.edge),
+    level: String(j.level), g0: Number(j.g0), g1_deg: Number(j.g1_deg),
+    g2_rel: j.g2_rel === null || j.g2_rel === undefined ? null : Number(j.g2_rel),
+    fold: Boolean(j.fold), degenerate: Number(j.degenerate), worstV: Number(j.worstV), ok: Boolean(j.ok),
+  }));
+  const crossings = Array.from(r.crossings || [], (c) => ({
+    patch: String(c.patch), other: String(c.other),
+    u: Array.from(c.u, Number), v: Array.from(c.v, Number), triangles: Number(c.triangles),
+  }));
+  const out = { ok: Boolean(r.ok), sceneSize: Number(r.sceneSize), joins, crossings };
+  if (r.error) out.error = { code: String(r.error.code), message: String(r.error.message) };
+  return out;
 }
 
 // The binding already returns copies (slices of the wasm heap), so the arrays are
@@ -84,6 +110,12 @@ function normalisePatch(p) {
     uvs: typed(p.uvs, Float32Array, 'uvs'),
     indices: typed(p.indices, Uint32Array, 'indices'),
   };
+  if (p.meanCurvature !== undefined) {
+    // Mean H (signed with respect to the drawn normal) and Gaussian K per vertex; 0 where degenerate.
+    out.meanCurvature = typed(p.meanCurvature, Float32Array, 'meanCurvature');
+    out.gaussCurvature = typed(p.gaussCurvature, Float32Array, 'gaussCurvature');
+    out.degenerateVertices = Number(p.degenerateVertices);
+  }
   if (p.operator) {
     // Per coordinate: { order, params: { name: value } } with the scene's own names.
     out.operator = {};
