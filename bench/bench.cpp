@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "analysis/join_certificate.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
 #include "ode/basis_cache.hpp"
@@ -147,6 +148,29 @@ int main() {
     });
     const double verts = static_cast<double>(probe.vertexCount());
     std::printf("%4dx%-5d %14.3f %12.3f %14.1f %14.3f %10.1f\n", n, n, fresh * 1e3, t * 1e3, verts / t / 1e6, floor * 1e3, t / floor);
+  }
+
+  // What analysis adds to a page re-solve at 256² (every patch solved with warm caches and
+  // tessellated into reused meshes): curvature per vertex, the join report (256 points per
+  // join), and the crossing test on the 48² meshes the page uses.
+  std::printf("\nanalysis at 256x256, whole scene (warm caches, reused meshes) [ms]\n");
+  std::printf("%-18s %10s %12s %10s %12s %12s\n", "example", "plain", "+curvature", "+joins", "+crossings", "curv+joins");
+  for (const char* id : {"you2004-fig4a", "zhang-c2-ex1", "wu2015-fig4"}) {
+    const Scene sc = parseScene(readText(dir + "/" + id + ".json"));
+    SolveCache cache;
+    std::vector<Mesh> meshes(sc.patches.size());
+    auto run = [&](bool curvature, bool joins, int crossingGrid) {
+      const auto solved = solveScene(sc, &cache);
+      for (size_t k = 0; k < solved.size(); ++k) tessellateInto(solved[k].surface, 256, 256, meshes[k], curvature);
+      if (joins) sink = checkScene(sc, solved, crossingGrid).joins.size();
+    };
+    const double plain = medianSeconds([&] { run(false, false, 0); });
+    const double curv = medianSeconds([&] { run(true, false, 0); });
+    const double joins = medianSeconds([&] { run(false, true, 0); });
+    const double cross = medianSeconds([&] { run(false, true, 48); });
+    const double both = medianSeconds([&] { run(true, true, 0); });
+    std::printf("%-18s %10.3f %11.3f%% %9.1f%% %11.1f%% %11.1f%%\n", id, plain * 1e3, 100 * (curv / plain - 1), 100 * (joins / plain - 1),
+                100 * (cross / plain - 1), 100 * (both / plain - 1));
   }
   return 0;
 }
