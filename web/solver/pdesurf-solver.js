@@ -47,15 +47,20 @@ export async function loadSolver(opts = {}) {
   }
   return {
     module: Module,
+    // false for a module built before solveSceneWith (no curvature, no join report)
+    analysis: typeof Module.solveSceneWith === 'function',
     solve: (scene, grid = {}) => solveWith(Module, scene, grid),
   };
 }
 
-function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
+// curvature / joins: ask the module for per-vertex H and K and for the join report
+// (docs/wasm-api.md); an older module without solveSceneWith solves without them.
+function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false } = {}) {
   const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  const extras = (curvature || joins) && typeof Module.solveSceneWith === 'function';
   let res;
   try {
-    res = Module.solveScene(text, nu, nv);
+    res = extras ? Module.solveSceneWith(text, nu, nv, { curvature, joins }) : Module.solveScene(text, nu, nv);
   } catch (err) {
     // Should not happen (the binding catches), but never let a raw throw escape.
     const msg = err instanceof Error ? err.message : `solver threw ${String(err)}`;
@@ -66,7 +71,9 @@ function solveWith(Module, scene, { nu = 64, nv = 64 } = {}) {
     const e = res.error || {};
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown solver error'));
   }
-  return { patches: Array.from(res.patches || [], normalisePatch) };
+  const out = { patches: Array.from(res.patches || [], normalisePatch) };
+  if (res.report) out.report = res.report;
+  return out;
 }
 
 // The binding already returns copies (slices of the wasm heap), so the arrays are
@@ -84,6 +91,11 @@ function normalisePatch(p) {
     uvs: typed(p.uvs, Float32Array, 'uvs'),
     indices: typed(p.indices, Uint32Array, 'indices'),
   };
+  if (p.meanCurvature !== undefined) {
+    out.meanCurvature = typed(p.meanCurvature, Float32Array, 'meanCurvature');
+    out.gaussCurvature = typed(p.gaussCurvature, Float32Array, 'gaussCurvature');
+    out.degenerateVertices = Number(p.degenerateVertices) || 0;
+  }
   if (p.operator) {
     // Per coordinate: { order, params: { name: value } } with the scene's own names.
     out.operator = {};
