@@ -109,13 +109,23 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
       viewer.setWireframe(settings.wireframe);
       applyShading();
     },
+    /** For the tests: the module's H and K of one patch as { mean: [min, max], gauss: [min, max], degenerate, count }. */
+    patchCurvature(name) {
+      const p = patches.find((q) => q.name === name);
+      if (!p || !p.meanCurvature) return null;
+      const range = (a) => a.reduce(([lo, hi], x) => [Math.min(lo, x), Math.max(hi, x)], [Infinity, -Infinity]);
+      return {
+        mean: range(p.meanCurvature), gauss: range(p.gaussCurvature),
+        degenerate: p.degenerateVertices, count: p.meanCurvature.length,
+      };
+    },
     /** For the tests. */
     state() {
       return {
         ...viewer.analysisState(),
         settings: { ...settings },
         scale,
-        legend: legend.element.hidden ? null : legend.element.textContent,
+        legend: legend.current(),
         report,
       };
     },

@@ -28,6 +28,7 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   editing: () => viewer?.editor.active() ?? null,
   controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
   analysis: () => analysis?.state() ?? null,
+  patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
 });
 

@@ -49,6 +49,12 @@ export function createCurvatureLegend(parent, lut) {
 
   return {
     element: root,
+    /** null when hidden, else { title, message (null while the ramp shows), min, max, data }. */
+    current() {
+      if (root.hidden) return null;
+      if (!message.hidden) return { title: title.textContent, message: message.textContent };
+      return { title: title.textContent, message: null, min: lo.textContent, max: hi.textContent, data: data.textContent };
+    },
     hide() {
       root.hidden = true;
     },
