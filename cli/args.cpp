@@ -13,6 +13,8 @@ const char* kUsage =
     "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]                   write every patch as OBJ\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
+    "  pdesurf check SCENE.json [--json] [--grid NxN]                         join certificate (G0/G1/G2, folds) and\n"
+    "      crossings on an NxN mesh per patch (default 64); exit 1 when a join fails its promise or a patch crosses\n"
     "  pdesurf encode-link SCENE.json [--grid NUxNV]                          print the shareable link's fragment\n"
     "  pdesurf decode-link 'URL-or-fragment'                                  print the scene of a shared link\n"
     "  methods: auto, closed, pseudo-navier[:M,N,L], modal:N, fourier:N, pseudo-spectral:N, reference\n";
@@ -38,7 +40,7 @@ Options parseArgs(const std::vector<std::string>& args) {
   Options o;
   o.command = args[0];
   if (o.command != "sample" && o.command != "export" && o.command != "compare" && o.command != "encode-link" &&
-      o.command != "decode-link")
+      o.command != "decode-link" && o.command != "check")
     throw std::runtime_error("unknown command '" + o.command + "'");
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];

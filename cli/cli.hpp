@@ -21,6 +21,7 @@ int runExport(const Options& o);
 int runCompare(const Options& o, std::ostream& out);
 int runEncodeLink(const Options& o, std::ostream& out);
 int runDecodeLink(const Options& o, std::ostream& out);
+int runCheck(const Options& o, std::ostream& out);  // exit code 1 when a join fails or a patch crosses
 
 extern const char* kUsage;
 

@@ -4,11 +4,13 @@
 #include <cstdio>
 
 #include "basis/general_function.hpp"
+#include "bezier/bernstein.hpp"
 
 namespace pdesurf {
 
 double VFunction::eval(double v, int k) const {
   if (family == Family::General) return general->eval(v, k);
+  if (family == Family::Bernstein) return bernsteinBasis(degree, n, v, k);
   if (family == Family::Poly) {
     if (k > n) return 0.0;
     const double s = (v - c) * w;
@@ -35,7 +37,8 @@ double VFunction::eval(double v, int k) const {
     case Family::Cosh: return wk * (k % 2 == 0 ? std::cosh(a) : std::sinh(a));
     case Family::Sinh: return wk * (k % 2 == 0 ? std::sinh(a) : std::cosh(a));
     case Family::Poly:
-    case Family::General: break;
+    case Family::General:
+    case Family::Bernstein: break;
   }
   return 0.0;
 }
@@ -43,6 +46,10 @@ double VFunction::eval(double v, int k) const {
 std::string describeFunction(const VFunction& g) {
   if (g.isGeneral()) return g.general->text();
   char buf[64];
+  if (g.family == Family::Bernstein) {
+    std::snprintf(buf, sizeof buf, "B_%d^%d(v)", g.n, g.degree);
+    return buf;
+  }
   if (g.isPoly()) {
     if (g.c == 0 && g.w == 1) std::snprintf(buf, sizeof buf, "v^%d", g.n);
     else std::snprintf(buf, sizeof buf, "((v - %g)*%g)^%d", g.c, g.w, g.n);
@@ -61,6 +68,7 @@ const char* familyName(Family f) {
     case Family::Cosh: return "cosh";
     case Family::Sinh: return "sinh";
     case Family::General: return "expr";
+    case Family::Bernstein: return "bernstein";
   }
   return "?";
 }

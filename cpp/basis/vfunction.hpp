@@ -11,13 +11,16 @@ class GeneralFunction;
 
 // General: any other function of v, typed as an expression (basis/general_function.hpp);
 // only the general methods (pseudo-Navier, modal, …) take it.
-enum class Family { Poly, Cos, Sin, Exp, Cosh, Sinh, General };
+// Bernstein: B_n^degree(v) on [0, 1], the v-factor of a Bézier patch (seed 002); made only by
+// bezierToSeparable, never typed in a scene.
+enum class Family { Poly, Cos, Sin, Exp, Cosh, Sinh, General, Bernstein };
 
 struct VFunction {
   Family family = Family::Poly;
   double w = 1.0;  // frequency; for Poly the scale of ((v - c) w)^n
   int n = 0;       // power (Poly only)
   double c = 0.0;  // centre (Poly only): the general methods use scaled powers for conditioning
+  int degree = 0;  // Bernstein only: B_n^degree
   std::shared_ptr<const GeneralFunction> general;  // General only
 
   bool isPoly() const { return family == Family::Poly; }
@@ -27,7 +30,7 @@ struct VFunction {
   // The k-th derivative d^k g / dv^k at v.
   double eval(double v, int k = 0) const;
   bool operator==(const VFunction& o) const {
-    return family == o.family && w == o.w && n == o.n && c == o.c && general == o.general;
+    return family == o.family && w == o.w && n == o.n && c == o.c && degree == o.degree && general == o.general;
   }
 };
 

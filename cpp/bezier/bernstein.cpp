@@ -1,7 +1,11 @@
 #include "bezier/bernstein.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
 
 namespace pdesurf {
 
@@ -34,12 +38,60 @@ std::vector<double> bernstein(int n, double u, int k) {
   return out;
 }
 
-std::vector<std::vector<double>> bernsteinMonomials(int n) {
-  // B_i^n = C(n,i) u^i (1-u)^{n-i} = C(n,i) Σ_r C(n-i, r) (-1)^r u^{i+r}
-  std::vector<std::vector<double>> out(n + 1, std::vector<double>(n + 1, 0.0));
-  for (int i = 0; i <= n; ++i)
-    for (int r = 0; r <= n - i; ++r) out[i][i + r] = binomial(n, i) * binomial(n - i, r) * (r % 2 ? -1.0 : 1.0);
-  return out;
+void bernsteinValues(int n, double u, double* out) {
+  if (n < 0 || n > kMaxBernsteinDegree) throw Error(ErrorCode::Internal, "Bernstein degree " + std::to_string(n) + " is out of range");
+  // out[i] = C(n,i) u^i (1-u)^{n-i}: u^i from the left, (1-u)^{n-i} from the right.
+  const double w = 1.0 - u;
+  double p = 1.0;
+  for (int i = 0; i <= n; ++i) out[i] = p, p *= u;
+  p = 1.0;
+  double c = 1.0;  // C(n, i), exact in double for n <= 32
+  for (int i = n; i >= 0; --i) {
+    out[i] *= p;
+    p *= w;
+  }
+  for (int i = 0; i <= n; ++i) {
+    out[i] *= c;
+    c = c * (n - i) / (i + 1);
+  }
+}
+
+std::vector<double> bernsteinDerivativeCoefs(const std::vector<double>& b, int k) {
+  const int n = static_cast<int>(b.size()) - 1;
+  if (k > n) return {};
+  std::vector<double> d = b;
+  double scale = 1.0;
+  for (int q = 0; q < k; ++q) {
+    for (size_t i = 0; i + 1 < d.size(); ++i) d[i] = d[i + 1] - d[i];
+    d.pop_back();
+    scale *= n - q;
+  }
+  for (double& x : d) x *= scale;
+  return d;
+}
+
+double bernsteinSum(const double* b, int n, double u) {
+  std::array<double, kMaxBernsteinDegree + 1> B;
+  bernsteinValues(n, u, B.data());
+  double s = 0.0;
+  for (int i = 0; i <= n; ++i) s += b[i] * B[i];
+  return s;
+}
+
+double bernsteinBasis(int n, int i, double u, int k) {
+  if (k > n || i < 0 || i > n) return 0.0;
+  // d^k B_i^n = n!/(n-k)! Σ_j (-1)^{k-j} C(k, j) B_{i-j}^{n-k}: the forward differences of
+  // the unit vector e_i, which have at most k + 1 non-zero entries.
+  std::array<double, kMaxBernsteinDegree + 1> B;
+  bernsteinValues(n - k, u, B.data());
+  double s = 0.0, ckj = 1.0, scale = 1.0;
+  for (int q = 0; q < k; ++q) scale *= n - q;
+  for (int j = 0; j <= k; ++j) {
+    const int idx = i - j;
+    if (idx >= 0 && idx <= n - k) s += ((k - j) % 2 ? -1.0 : 1.0) * ckj * B[idx];
+    ckj = ckj * (k - j) / (j + 1);
+  }
+  return scale * s;
 }
 
 GaussRule gaussLegendre(int points) {

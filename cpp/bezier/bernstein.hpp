@@ -8,8 +8,20 @@ namespace pdesurf {
 // d^k/du^k B_i^n(u) for i = 0..n (zero for k > n).
 std::vector<double> bernstein(int n, double u, int k = 0);
 
-// B_i^n(u) as ascending monomial coefficients, per i: out[i][a] = coefficient of u^a.
-std::vector<std::vector<double>> bernsteinMonomials(int n);
+// Evaluation in Bernstein form, never through monomials (which cancel catastrophically at
+// high degree). Every B_i^n(u) = C(n,i) u^i (1-u)^{n-i} is formed as a product of positive
+// factors, so Σ b_i B_i^n(u) is accurate to a few ulps of Σ |b_i| B_i^n(u). Degrees up to
+// kMaxBernsteinDegree.
+constexpr int kMaxBernsteinDegree = 32;
+// out[i] = B_i^n(u), i = 0..n.
+void bernsteinValues(int n, double u, double* out);
+// Coefficients of the k-th derivative of Σ b_i B_i^n in the Bernstein basis of degree n - k:
+// n!/(n-k)! Δ^k b (forward differences). Empty when k > n.
+std::vector<double> bernsteinDerivativeCoefs(const std::vector<double>& b, int k);
+// Σ b_i B_i^n(u) with n = b.size() - 1.
+double bernsteinSum(const double* b, int n, double u);
+// d^k/du^k B_i^n(u) for one i.
+double bernsteinBasis(int n, int i, double u, int k = 0);
 
 struct GaussRule {
   std::vector<double> x, w;  // nodes in [0, 1], weights summing to 1

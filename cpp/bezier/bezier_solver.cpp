@@ -215,23 +215,19 @@ double BezierSolver::normalMisfit(const ControlNet& net) const {
 ControlNet solveBezier(const BezierProblem& p) { return BezierSolver(p).solve(p.initial); }
 
 SeparableSurface bezierToSeparable(int n, int m, const ControlNet& net) {
-  // R = Σ_ij B_i(u) B_j(v) P_ij = Σ_b v^b Σ_a u^a C_ab with C = Mu^T P Mv in monomials.
-  const auto mu = bernsteinMonomials(n), mv = bernsteinMonomials(m);
+  // R = Σ_j (Σ_i P_ij B_i^n(u)) B_j^m(v): per coordinate and column j, a Bernstein-form
+  // u-factor times the basis function B_j^m(v), both evaluated in Bernstein form.
   SeparableSurface s;
   s.u0 = 0, s.u1 = 1, s.v0 = 0, s.v1 = 1;
   for (int c = 0; c < 3; ++c)
-    for (int b = 0; b <= m; ++b) {
-      std::vector<double> poly(n + 1, 0.0);
-      for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= m; ++j) {
-          const double pv = net[i * (m + 1) + j](c) * mv[j][b];
-          if (pv == 0.0) continue;
-          for (int a = 0; a <= n; ++a) poly[a] += mu[i][a] * pv;
-        }
+    for (int j = 0; j <= m; ++j) {
+      std::vector<double> column(n + 1);
+      for (int i = 0; i <= n; ++i) column[i] = net[i * (m + 1) + j](c);
       VFunction g;
-      g.family = Family::Poly;
-      g.n = b;
-      s.component[c].push_back({g, UFactor::polynomial(poly)});
+      g.family = Family::Bernstein;
+      g.n = j;
+      g.degree = m;
+      s.component[c].push_back({g, UFactor::bernsteinForm(column)});
     }
   return s;
 }

@@ -1,6 +1,9 @@
 #include "ode/u_factor.hpp"
 
 #include <algorithm>
+#include <array>
+
+#include "bezier/bernstein.hpp"
 
 namespace pdesurf {
 
@@ -31,7 +34,17 @@ UFactor UFactor::polynomial(const std::vector<double>& ascending) {
   return f;
 }
 
+UFactor UFactor::bernsteinForm(const std::vector<double>& coefs) {
+  UFactor f;
+  f.bernstein = coefs;
+  return f;
+}
+
 double UFactor::eval(double u, int m) const {
+  if (!bernstein.empty()) {
+    const std::vector<double> d = bernsteinDerivativeCoefs(bernstein, m);
+    return d.empty() ? 0.0 : bernsteinSum(d.data(), static_cast<int>(d.size()) - 1, u);
+  }
   double sum = 0.0;
   for (const ExpPoly& piece : pieces) {
     const double x = u - piece.shift;
@@ -44,6 +57,23 @@ double UFactor::eval(double u, int m) const {
 
 void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out) const {
   std::fill(out, out + static_cast<size_t>(count) * (maxDerivative + 1), 0.0);
+  if (!bernstein.empty()) {
+    // Derivative coefficients once; per point the basis values of each lower degree.
+    std::vector<std::vector<double>> d(maxDerivative + 1);
+    for (int m = 0; m <= maxDerivative; ++m) d[m] = bernsteinDerivativeCoefs(bernstein, m);
+    std::array<double, kMaxBernsteinDegree + 1> B;
+    for (int m = 0; m <= maxDerivative; ++m) {
+      if (d[m].empty()) continue;
+      const int n = static_cast<int>(d[m].size()) - 1;
+      for (int i = 0; i < count; ++i) {
+        bernsteinValues(n, u[i], B.data());
+        double s = 0.0;
+        for (int k = 0; k <= n; ++k) s += d[m][k] * B[k];
+        out[static_cast<size_t>(m) * count + i] = s;
+      }
+    }
+    return;
+  }
   std::vector<std::vector<cplx>> q(maxDerivative + 1);
   for (const ExpPoly& piece : pieces) {
     for (int m = 0; m <= maxDerivative; ++m) q[m] = derivativePoly(piece.poly, piece.rate, m);

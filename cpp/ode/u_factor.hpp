@@ -25,8 +25,12 @@ cplx evalPoly(const std::vector<cplx>& p, cplx x);
 class UFactor {
  public:
   std::vector<ExpPoly> pieces;
+  // Or, when not empty: G(u) = Σ_i b_i B_i^n(u) on [0, 1] in Bernstein form (n = size - 1), the
+  // u-factor of a Bézier patch, evaluated in the basis its data live in (pieces then empty).
+  std::vector<double> bernstein;
 
   static UFactor polynomial(const std::vector<double>& ascending);  // a real polynomial in u
+  static UFactor bernsteinForm(const std::vector<double>& coefs);
   // The m-th derivative at u.
   double eval(double u, int m = 0) const;
   // out[k * count + i] = G^{(k)}(u[i]) for k = 0..maxDerivative. Derivative polynomials are

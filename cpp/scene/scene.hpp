@@ -2,6 +2,7 @@
 // parseScene validates everything and names the offending field in its errors; solveScene
 // turns each patch into a separable surface.
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -35,12 +36,17 @@ struct PrimarySurface {
   std::array<Expr, 3> pointwise;  // what does not separate (version-2 "surface" expressions)
 };
 
-// Where a primary surface meets a PDE patch: its t = t0 (or t1) curve is that patch's
-// boundary at u = end. Used to check (and later report) continuity along the trimline.
+// Where a primary surface meets a PDE or Bézier patch: its t = t0 (or t1) curve is that
+// patch's boundary at u = end (or, for a Bézier patch, v = end). The join certificate
+// (analysis/join_certificate.hpp) checks the continuity the patch promises along it.
 struct Meets {
   std::string patch;
-  int end = 0;         // 0: u = 0, 1: u = 1
-  bool atT1 = false;   // the primary's edge: false t = t0, true t = t1
+  int end = 0;          // 0: u (or v) = 0, 1: u (or v) = 1
+  bool alongU = false;  // Bézier only: the border v = end, running along u
+  bool atT1 = false;    // the primary's edge: false t = t0, true t = t1
+  // The primary's v-interval that the patch's border parameter maps onto linearly; unset
+  // (NaN): a PDE blend shares v with the primary, a Bézier border maps [0, 1] onto v_range.
+  double v0 = NAN, v1 = NAN;
 };
 
 // The operator of one coordinate as the scene names it, resolved to numbers: order 2 {s, t},

@@ -78,14 +78,21 @@ void parseParameters(const json& j, Scene& scene, Resolver& r, int version) {
   }
 }
 
-void parseMeets(const json& j, const std::string& path, Patch& patch) {
+void parseMeets(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   if (!j.contains("meets")) return;
   const std::string mp = path + ".meets";
-  allowOnly(j["meets"], mp, {"patch", "end", "at"});
+  allowOnly(j["meets"], mp, {"patch", "end", "at", "v_range"});
   patch.meets.patch = stringField(require(j["meets"], "patch", mp), mp + ".patch", 64);
   const std::string end = stringField(require(j["meets"], "end", mp), mp + ".end");
-  if (end != "u0" && end != "u1") fail(ErrorCode::InvalidField, mp + ".end", "expected \"u0\" or \"u1\"");
-  patch.meets.end = end == "u0" ? 0 : 1;
+  if (end != "u0" && end != "u1" && end != "v0" && end != "v1")
+    fail(ErrorCode::InvalidField, mp + ".end", "expected \"u0\", \"u1\" (or, for a bezier patch, \"v0\", \"v1\")");
+  patch.meets.end = end[1] == '0' ? 0 : 1;
+  patch.meets.alongU = end[0] == 'v';
+  if (j["meets"].contains("v_range")) {
+    const auto vr = r.range(j["meets"], "v_range", mp, 0.0, 1.0);
+    if (vr[0] == vr[1]) fail(ErrorCode::InvalidField, mp + ".v_range", "the interval is empty");
+    patch.meets.v0 = vr[0], patch.meets.v1 = vr[1];
+  }
   if (j["meets"].contains("at")) {
     const std::string at = stringField(j["meets"]["at"], mp + ".at");
     if (at != "t0" && at != "t1") fail(ErrorCode::InvalidField, mp + ".at", "expected \"t0\" or \"t1\"");
@@ -102,7 +109,7 @@ void primaryRanges(const json& j, const std::string& path, const Resolver& r, Pr
 // "ruled": C(v) + t D(v).
 void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "curve", "direction", "meets"});
-  parseMeets(j, path, patch);
+  parseMeets(j, path, r, patch);
   primaryRanges(j, path, r, patch.primary);
   require(j, "curve", path);
   require(j, "direction", path);
@@ -117,7 +124,7 @@ void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch
 // "surface" (version 2): per coordinate an expression in t and v.
 void parseSurface(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
-  parseMeets(j, path, patch);
+  parseMeets(j, path, r, patch);
   primaryRanges(j, path, r, patch.primary);
   for (int c = 0; c < 3; ++c)
     if (j.contains(kAxis[c]))
@@ -127,7 +134,7 @@ void parseSurface(const json& j, const std::string& path, const Resolver& r, Pat
 // "separable": per coordinate, terms with an optional factor "t": {fn, w, n} of t.
 void parseSeparable(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
-  parseMeets(j, path, patch);
+  parseMeets(j, path, r, patch);
   primaryRanges(j, path, r, patch.primary);
   for (int c = 0; c < 3; ++c) {
     if (!j.contains(kAxis[c])) continue;
@@ -239,8 +246,11 @@ static Scene parseSceneUnchecked(const std::string& text) {
     const Meets& m = scene.patches[i].meets;
     if (m.patch.empty()) continue;
     const Patch* target = scene.find(m.patch);
-    if (!target || target->kind != PatchKind::Pde)
-      fail(ErrorCode::UnknownName, "patches[" + std::to_string(i) + "].meets.patch", "no PDE patch named '" + m.patch + "'");
+    const std::string mp = "patches[" + std::to_string(i) + "].meets";
+    if (!target || (target->kind != PatchKind::Pde && target->kind != PatchKind::Bezier))
+      fail(ErrorCode::UnknownName, mp + ".patch", "no pde or bezier patch named '" + m.patch + "'");
+    if (m.alongU && target->kind != PatchKind::Bezier)
+      fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");
   }
   return scene;
 }

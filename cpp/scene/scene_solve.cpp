@@ -51,7 +51,8 @@ UFactor tFactor(const VFunction& f, double coef) {
     case Family::Exp: piece(w, coef); break;
     case Family::Cosh: piece(w, coef / 2), piece(-w, coef / 2); break;
     case Family::Sinh: piece(w, coef / 2), piece(-w, -coef / 2); break;
-    case Family::General: throw Error(ErrorCode::Internal, "a factor of t must be a basis function");
+    case Family::General:
+    case Family::Bernstein: throw Error(ErrorCode::Internal, "a factor of t must be a basis function");
   }
   return out;
 }

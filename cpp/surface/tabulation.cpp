@@ -13,9 +13,11 @@ void checkGrid(int nu, int nv) {
                                          " is outside 1x1 .. " + std::to_string(kMaxGrid) + "x" + std::to_string(kMaxGrid));
 }
 
-Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
+Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative) {
   checkGrid(nu, nv);
   Tabulation t;
+  const int D = maxDerivative + 1;
+  t.depth = D;
   t.nu = nu;
   t.nv = nv;
   t.u.resize(nu + 1);
@@ -28,27 +30,32 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv) {
     const auto& terms = s.component[c];
     const int T = static_cast<int>(terms.size());
     t.terms[c] = T;
-    t.uTab[c].assign(static_cast<size_t>(nu + 1) * 2 * T, 0.0);
-    t.vTab[c].assign(static_cast<size_t>(nv + 1) * 2 * T, 0.0);
+    t.uTab[c].assign(static_cast<size_t>(nu + 1) * D * T, 0.0);
+    t.vTab[c].assign(static_cast<size_t>(nv + 1) * D * T, 0.0);
     for (int k = 0; k < T; ++k) {
-      double* uk = t.uTab[c].data() + static_cast<size_t>(2 * k) * (nu + 1);
-      terms[k].G.tabulate(t.u.data(), nu + 1, 1, uk);
+      double* uk = t.uTab[c].data() + static_cast<size_t>(D * k) * (nu + 1);
+      terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk);
       bool finite = true;
-      for (int i = 0; i < 2 * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
-      for (int j = 0; j <= nv; ++j) {
-        const double g0 = terms[k].g.eval(t.v[j], 0), g1 = terms[k].g.eval(t.v[j], 1);
-        t.vTab[c][j * 2 * T + 2 * k] = g0;
-        t.vTab[c][j * 2 * T + 2 * k + 1] = g1;
-        finite = finite && std::isfinite(g0) && std::isfinite(g1);
-      }
+      for (int i = 0; i < D * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
+      for (int j = 0; j <= nv; ++j)
+        for (int d = 0; d < D; ++d) {
+          const double g = terms[k].g.eval(t.v[j], d);
+          t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = g;
+          finite = finite && std::isfinite(g);
+        }
       if (!finite)
         throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": term " + describeFunction(terms[k].g) +
                                               " is not finite on the grid (v from " + std::to_string(s.v0) + " to " + std::to_string(s.v1) + ")");
     }
   }
-  for (int c = 0; c < 3; ++c)
-    if (s.pointwise[c])
-      t.pointwise[c] = {s.pointwise[c], derivative(s.pointwise[c], ExprVar::U), derivative(s.pointwise[c], ExprVar::V)};
+  for (int c = 0; c < 3; ++c) {
+    const Expr& e = s.pointwise[c];
+    if (!e) continue;
+    const Expr eu = derivative(e, ExprVar::U), ev = derivative(e, ExprVar::V);
+    t.pointwise[c] = {e, eu, ev};
+    if (maxDerivative >= 2)
+      for (const Expr& d : {derivative(eu, ExprVar::U), derivative(eu, ExprVar::V), derivative(ev, ExprVar::V)}) t.pointwise[c].push_back(d);
+  }
   return t;
 }
 

@@ -4,61 +4,10 @@
 #include <cmath>
 
 #include "common/errors.hpp"
-#include "surface/tabulation.hpp"
+#include "surface/combine_rows.hpp"
+#include "surface/curvature.hpp"
 
 namespace pdesurf {
-
-namespace {
-
-// Combines the tabulated factors one grid row (fixed v) at a time into structure-of-arrays
-// row buffers, then calls emitRow(j, row): row.X[c][i], row.Xu[c][i], row.Xv[c][i].
-struct Row {
-  std::array<std::vector<double>, 3> X, Xu, Xv;
-};
-
-template <class EmitRow>
-void combineRows(const Tabulation& t, EmitRow&& emitRow) {
-  const int nu = t.nu, nv = t.nv;
-  const size_t m = static_cast<size_t>(nu) + 1;
-  Row row;
-  for (int c = 0; c < 3; ++c) row.X[c].resize(m), row.Xu[c].resize(m), row.Xv[c].resize(m);
-  for (int j = 0; j <= nv; ++j) {
-    for (int c = 0; c < 3; ++c) {
-      const int T = t.terms[c];
-      double* x = row.X[c].data();
-      double* xu = row.Xu[c].data();
-      double* xv = row.Xv[c].data();
-      std::fill(x, x + m, 0.0), std::fill(xu, xu + m, 0.0), std::fill(xv, xv + m, 0.0);
-      const double* gv = t.vTab[c].data() + static_cast<size_t>(j) * 2 * T;
-      for (int k = 0; k < T; ++k) {
-        const double g = gv[2 * k], dg = gv[2 * k + 1];
-        const double* G = t.uTab[c].data() + static_cast<size_t>(2 * k) * m;
-        const double* dG = G + m;
-        for (size_t i = 0; i < m; ++i) {
-          x[i] += G[i] * g;
-          xu[i] += dG[i] * g;
-          xv[i] += G[i] * dg;
-        }
-      }
-    }
-    for (int c = 0; c < 3; ++c) {  // rare: surfaces typed as non-separable expressions
-      const auto& pw = t.pointwise[c];
-      if (!pw[0]) continue;
-      for (size_t i = 0; i < m; ++i) {
-        const double vars[2] = {t.v[j], t.u[i]};
-        row.X[c][i] += evaluate(*pw[0], vars);
-        row.Xu[c][i] += evaluate(*pw[1], vars);
-        row.Xv[c][i] += evaluate(*pw[2], vars);
-        if (!std::isfinite(row.X[c][i]) || !std::isfinite(row.Xu[c][i]) || !std::isfinite(row.Xv[c][i]))
-          throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
-                                                std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) + ")");
-      }
-    }
-    emitRow(j, row);
-  }
-}
-
-}  // namespace
 
 GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
   const Tabulation t = tabulate(s, nu, nv);
@@ -72,13 +21,13 @@ GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
   g.Xu.resize(3 * n);
   g.Xv.resize(3 * n);
   const size_t m = static_cast<size_t>(nu) + 1;
-  combineRows(t, [&](int j, const Row& row) {
+  combineRows(t, [&](int j, const GridRow& row) {
     for (size_t i = 0; i < m; ++i) {
       const size_t idx = j * m + i;
       for (int c = 0; c < 3; ++c) {
-        g.X[3 * idx + c] = row.X[c][i];
-        g.Xu[3 * idx + c] = row.Xu[c][i];
-        g.Xv[3 * idx + c] = row.Xv[c][i];
+        g.X[3 * idx + c] = row.d[0][c][i];
+        g.Xu[3 * idx + c] = row.d[1][c][i];
+        g.Xv[3 * idx + c] = row.d[2][c][i];
       }
     }
   });
@@ -129,8 +78,8 @@ void repairPoleNormals(const std::vector<size_t>& poles, int nu, int nv, Mesh& m
 
 }  // namespace
 
-void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m) {
-  const Tabulation t = tabulate(s, nu, nv);
+void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool curvature) {
+  const Tabulation t = tabulate(s, nu, nv, curvature ? 2 : 1);
   const size_t n = static_cast<size_t>(nu + 1) * (nv + 1);
   if (m.nu != nu || m.nv != nv || m.uvs.size() != 2 * n) buildGridData(nu, nv, m);
   m.nu = nu;
@@ -139,12 +88,20 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m) {
   m.normals.resize(3 * n);
   float* pos = m.positions.data();
   float* nrm = m.normals.data();
+  if (curvature) {
+    m.meanCurvature.resize(n);
+    m.gaussCurvature.resize(n);
+  } else {
+    m.meanCurvature.clear();
+    m.gaussCurvature.clear();
+  }
+  m.degenerateVertices = 0;
   std::vector<size_t> poles;
   const size_t w = static_cast<size_t>(nu) + 1;
-  combineRows(t, [&](int j, const Row& row) {
-    const double *x = row.X[0].data(), *y = row.X[1].data(), *z = row.X[2].data();
-    const double *xu = row.Xu[0].data(), *yu = row.Xu[1].data(), *zu = row.Xu[2].data();
-    const double *xv = row.Xv[0].data(), *yv = row.Xv[1].data(), *zv = row.Xv[2].data();
+  combineRows(t, [&](int j, const GridRow& row) {
+    const double *x = row.at(0, 0), *y = row.at(0, 1), *z = row.at(0, 2);
+    const double *xu = row.at(1, 0), *yu = row.at(1, 1), *zu = row.at(1, 2);
+    const double *xv = row.at(2, 0), *yv = row.at(2, 1), *zv = row.at(2, 2);
     float* p = pos + 3 * j * w;
     float* q = nrm + 3 * j * w;
     bool pole = false;
@@ -160,6 +117,7 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m) {
       p[3 * i] = static_cast<float>(x[i]), p[3 * i + 1] = static_cast<float>(y[i]), p[3 * i + 2] = static_cast<float>(z[i]);
       q[3 * i] = static_cast<float>(nx * inv), q[3 * i + 1] = static_cast<float>(ny * inv), q[3 * i + 2] = static_cast<float>(nz * inv);
     }
+    if (curvature) m.degenerateVertices += curvatureRow(row, m.meanCurvature.data() + j * w, m.gaussCurvature.data() + j * w);
     if (pole)  // rare: find the pole vertices of this row again
       for (size_t i = 0; i < w; ++i)
         if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(j * w + i);
@@ -167,9 +125,9 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m) {
   repairPoleNormals(poles, nu, nv, m);
 }
 
-Mesh tessellate(const SeparableSurface& s, int nu, int nv) {
+Mesh tessellate(const SeparableSurface& s, int nu, int nv, bool curvature) {
   Mesh m;
-  tessellateInto(s, nu, nv, m);
+  tessellateInto(s, nu, nv, m, curvature);
   return m;
 }
 

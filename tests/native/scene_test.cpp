@@ -74,7 +74,7 @@ TEST_CASE("scene errors: fields") {
   CHECK(outcomeOf(j) == "InvalidField: patches[1].name: duplicate patch name 'blend'");
   j = fig2a();
   j["patches"][1]["meets"]["patch"] = "nowhere";
-  CHECK(outcomeOf(j) == "UnknownName: patches[1].meets.patch: no PDE patch named 'nowhere'");
+  CHECK(outcomeOf(j) == "UnknownName: patches[1].meets.patch: no pde or bezier patch named 'nowhere'");
   j = fig2a();
   j["patches"][0]["v_range"] = {1, 0};
   CHECK(outcomeOf(j) == "InvalidField: patches[0].v_range: end must be greater than start");

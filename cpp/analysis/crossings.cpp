@@ -1,0 +1,193 @@
+#include "analysis/crossings.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "surface/mesh.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+struct Tri {
+  int patch, i, j;  // cell (i, j) of the patch's grid
+  Eigen::Vector3d a, b, c, lo, hi;
+};
+
+struct PatchGrid {
+  const Patch* patch;
+  double u0, u1, v0, v1;
+  bool closedU = false, closedV = false;  // first and last grid lines coincide (seams)
+  int skipU = -1, skipV = -1;  // not used per pair: see joinRow
+};
+
+// Segment pq against the interior of triangle abc (Möller-Trumbore, strict with margin eps).
+bool segmentCrosses(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Tri& t, double eps) {
+  const Eigen::Vector3d e1 = t.b - t.a, e2 = t.c - t.a, d = q - p;
+  const Eigen::Vector3d h = d.cross(e2);
+  const double det = e1.dot(h);
+  if (std::abs(det) <= 1e-14 * e1.norm() * e2.norm() * d.norm()) return false;  // parallel: touching, not crossing
+  const double f = 1.0 / det;
+  const Eigen::Vector3d s = p - t.a;
+  const double bu = f * s.dot(h);
+  if (bu <= eps || bu >= 1 - eps) return false;
+  const Eigen::Vector3d qv = s.cross(e1);
+  const double bv = f * d.dot(qv);
+  if (bv <= eps || bu + bv >= 1 - eps) return false;
+  const double tt = f * e2.dot(qv);
+  return tt > eps && tt < 1 - eps;
+}
+
+bool trianglesCross(const Tri& x, const Tri& y, double eps) {
+  const Eigen::Vector3d* X[3] = {&x.a, &x.b, &x.c};
+  const Eigen::Vector3d* Y[3] = {&y.a, &y.b, &y.c};
+  for (int k = 0; k < 3; ++k) {
+    if (segmentCrosses(*X[k], *X[(k + 1) % 3], y, eps)) return true;
+    if (segmentCrosses(*Y[k], *Y[(k + 1) % 3], x, eps)) return true;
+  }
+  return false;
+}
+
+bool sharePoint(const Tri& x, const Tri& y, double tol) {
+  const Eigen::Vector3d* X[3] = {&x.a, &x.b, &x.c};
+  const Eigen::Vector3d* Y[3] = {&y.a, &y.b, &y.c};
+  for (auto* p : X)
+    for (auto* q : Y)
+      if ((*p - *q).cwiseAbs().maxCoeff() <= tol) return true;
+  return false;
+}
+
+// Within kContactRows cells of one of the patch's borders.
+constexpr int kContactRows = 3;
+bool nearBorder(const Tri& t, int grid) {
+  return t.i < kContactRows || t.i >= grid - kContactRows || t.j < kContactRows || t.j >= grid - kContactRows;
+}
+
+// A patch's border resting on another surface with a common tangent plane (a blend meeting a
+// surface along a curve that is not declared as a join, e.g. seed 000 Fig. 5): chords of the
+// two meshes cross within a band that shrinks with the grid (3 rows at any grid). Nearly
+// parallel triangles at a border are taken as that contact, not as a crossing.
+bool tangentialContact(const Tri& x, const Tri& y, int grid) {
+  if (!nearBorder(x, grid) && !nearBorder(y, grid)) return false;
+  const Eigen::Vector3d nx = (x.b - x.a).cross(x.c - x.a).normalized(), ny = (y.b - y.a).cross(y.c - y.a).normalized();
+  return std::abs(nx.dot(ny)) > std::cos(10.0 * M_PI / 180.0);
+}
+
+// Index distance along a grid direction of n cells, wrapping when the direction is closed.
+int cellDistance(int a, int b, int n, bool closed) {
+  const int d = std::abs(a - b);
+  return closed ? std::min(d, n - d) : d;
+}
+
+}  // namespace
+
+std::vector<Crossing> findCrossings(const Scene& scene, const std::vector<SolvedPatch>& solved, double size, int grid) {
+  (void)scene;
+  const int P = static_cast<int>(solved.size());
+  std::vector<PatchGrid> grids(P);
+  std::vector<Tri> tris;
+  const double tol = 1e-9 * size;
+  double edgeSum = 0.0;
+  for (int p = 0; p < P; ++p) {
+    const SeparableSurface& s = solved[p].surface;
+    const GridSamples g = sampleGrid(s, grid, grid);
+    auto at = [&](int i, int j) { return Eigen::Vector3d(&g.X[3 * (static_cast<size_t>(j) * (grid + 1) + i)]); };
+    PatchGrid& pg = grids[p];
+    pg = {solved[p].patch, s.u0, s.u1, s.v0, s.v1};
+    pg.closedU = pg.closedV = true;
+    for (int k = 0; k <= grid; ++k) {
+      pg.closedV = pg.closedV && (at(k, 0) - at(k, grid)).norm() <= tol;
+      pg.closedU = pg.closedU && (at(0, k) - at(grid, k)).norm() <= tol;
+    }
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i) {
+        const Eigen::Vector3d a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+        for (const auto& t3 : {std::array<Eigen::Vector3d, 3>{a, b, c}, std::array<Eigen::Vector3d, 3>{a, c, d}}) {
+          Tri t{p, i, j, t3[0], t3[1], t3[2], t3[0].cwiseMin(t3[1]).cwiseMin(t3[2]), t3[0].cwiseMax(t3[1]).cwiseMax(t3[2])};
+          edgeSum += (t.hi - t.lo).norm();
+          tris.push_back(t);
+        }
+      }
+  }
+  // The cell row of patch p along its join with patch q (skipped in that pair), or -1.
+  auto joinRow = [&](int p, int q, bool* alongU) -> int {
+    const Patch& pp = *solved[p].patch;
+    const Patch& qq = *solved[q].patch;
+    if (qq.kind == PatchKind::Primary && qq.meets.patch == pp.name) {
+      *alongU = qq.meets.alongU;
+      return qq.meets.end ? grid - 1 : 0;
+    }
+    if (pp.kind == PatchKind::Primary && pp.meets.patch == qq.name) {
+      *alongU = false;
+      return pp.meets.atT1 ? grid - 1 : 0;
+    }
+    return -1;
+  };
+  auto skipped = [&](const Tri& t, int other) {
+    bool alongU = false;
+    const int row = joinRow(t.patch, other, &alongU);
+    return row >= 0 && (alongU ? t.j : t.i) == row;
+  };
+  // Uniform spatial hash with cells about twice a triangle's size.
+  const double h = std::max(2.0 * edgeSum / std::max<size_t>(1, tris.size()), 1e-12 * size);
+  auto key = [&](int x, int y, int z) { return (static_cast<int64_t>(x) * 73856093) ^ (static_cast<int64_t>(y) * 19349663) ^ (static_cast<int64_t>(z) * 83492791); };
+  auto cellOf = [&](double x) { return static_cast<int>(std::floor(x / h)); };
+  std::unordered_map<int64_t, std::vector<int>> buckets;
+  for (int k = 0; k < static_cast<int>(tris.size()); ++k) {
+    const Tri& t = tris[k];
+    for (int x = cellOf(t.lo.x()); x <= cellOf(t.hi.x()); ++x)
+      for (int y = cellOf(t.lo.y()); y <= cellOf(t.hi.y()); ++y)
+        for (int z = cellOf(t.lo.z()); z <= cellOf(t.hi.z()); ++z) buckets[key(x, y, z)].push_back(k);
+  }
+  std::vector<Crossing> found;
+  auto record = [&](const Tri& x, const Tri& y) {
+    const Tri& a = solved[x.patch].patch->kind == PatchKind::Primary ? y : x;  // name the blend first
+    const Tri& b = &a == &x ? y : x;
+    const PatchGrid &ga = grids[a.patch], &gb = grids[b.patch];
+    auto range = [&](double lo, double hi, int cell) {
+      return std::array<double, 2>{lo + (hi - lo) * cell / grid, lo + (hi - lo) * (cell + 1) / grid};
+    };
+    auto grow = [](std::array<double, 2>& r, const std::array<double, 2>& s) { r[0] = std::min(r[0], s[0]), r[1] = std::max(r[1], s[1]); };
+    for (Crossing& c : found)
+      if (c.patch == ga.patch->name && c.other == gb.patch->name) {
+        grow(c.u, range(ga.u0, ga.u1, a.i)), grow(c.v, range(ga.v0, ga.v1, a.j));
+        grow(c.otherU, range(gb.u0, gb.u1, b.i)), grow(c.otherV, range(gb.v0, gb.v1, b.j));
+        ++c.triangles;
+        return;
+      }
+    found.push_back({ga.patch->name, gb.patch->name, range(ga.u0, ga.u1, a.i), range(ga.v0, ga.v1, a.j), range(gb.u0, gb.u1, b.i),
+                     range(gb.v0, gb.v1, b.j), 1});
+  };
+  std::vector<int> stamp(tris.size(), -1);
+  for (int k = 0; k < static_cast<int>(tris.size()); ++k) {
+    const Tri& t = tris[k];
+    const bool primaryK = solved[t.patch].patch->kind == PatchKind::Primary;
+    for (int x = cellOf(t.lo.x()); x <= cellOf(t.hi.x()); ++x)
+      for (int y = cellOf(t.lo.y()); y <= cellOf(t.hi.y()); ++y)
+        for (int z = cellOf(t.lo.z()); z <= cellOf(t.hi.z()); ++z) {
+          auto it = buckets.find(key(x, y, z));
+          if (it == buckets.end()) continue;
+          for (int o : it->second) {
+            if (o <= k || stamp[o] == k) continue;
+            stamp[o] = k;
+            const Tri& u = tris[o];
+            if (primaryK && solved[u.patch].patch->kind == PatchKind::Primary) continue;  // only blends are certified
+            if (((t.lo - u.hi).array() > 0).any() || ((u.lo - t.hi).array() > 0).any()) continue;
+            if (t.patch == u.patch) {
+              const PatchGrid& g = grids[t.patch];
+              if (cellDistance(t.i, u.i, grid, g.closedU) <= 1 && cellDistance(t.j, u.j, grid, g.closedV) <= 1) continue;
+            } else if (skipped(t, u.patch) || skipped(u, t.patch)) {
+              continue;
+            }
+            if (sharePoint(t, u, tol)) continue;
+            if (t.patch != u.patch && tangentialContact(t, u, grid)) continue;
+            if (trianglesCross(t, u, 1e-9)) record(t, u);
+          }
+        }
+  }
+  return found;
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,24 @@
+// Crossing test (docs/analysis.md): a PDE or Bézier patch must not pass through itself or any
+// other patch away from its joins. Every patch is sampled on a grid×grid mesh; triangle pairs
+// near each other (a uniform spatial hash) are tested edge against triangle. Pairs that touch
+// by construction are skipped: neighbouring cells of one patch, triangles sharing a vertex
+// position (seams, poles, joins on a common grid) and the cell rows along a declared join.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+struct Crossing {
+  std::string patch, other;  // other == patch: the patch crosses itself
+  std::array<double, 2> u{}, v{};  // parameter ranges on `patch` of the crossing triangles
+  std::array<double, 2> otherU{}, otherV{};  // and on `other`
+  int triangles = 0;  // crossing triangle pairs found
+};
+
+std::vector<Crossing> findCrossings(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
+
+}  // namespace pdesurf

@@ -1,0 +1,31 @@
+#include "analysis/edge_samples.hpp"
+
+#include "surface/combine_rows.hpp"
+
+namespace pdesurf {
+
+std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU, int end, double a0, double a1, int samples) {
+  SeparableSurface s = surface;  // the factors are functions of absolute u and v: only the ranges change
+  const double sign = end == 0 ? 1.0 : -1.0;
+  std::vector<EdgePoint> out(samples);
+  auto vec = [](const GridRow& row, int q, size_t i) { return Eigen::Vector3d(row.d[q][0][i], row.d[q][1][i], row.d[q][2][i]); };
+  if (!alongU) {
+    s.v0 = a0, s.v1 = a1;
+    const Tabulation t = tabulate(s, 1, samples - 1, 2);
+    combineRows(t, [&](int j, const GridRow& row) {
+      const size_t i = end;
+      out[j] = {vec(row, 0, i), vec(row, 2, i), sign * vec(row, 1, i), vec(row, 3, i), vec(row, 5, i), sign * vec(row, 4, i)};
+    });
+  } else {
+    s.u0 = a0, s.u1 = a1;
+    const Tabulation t = tabulate(s, samples - 1, 1, 2);
+    combineRows(t, [&](int j, const GridRow& row) {
+      if (j != end) return;
+      for (int i = 0; i < samples; ++i)
+        out[i] = {vec(row, 0, i), vec(row, 1, i), sign * vec(row, 2, i), vec(row, 5, i), vec(row, 3, i), sign * vec(row, 4, i)};
+    });
+  }
+  return out;
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,21 @@
+// Analytic derivatives along one edge of a patch (internal to analysis/): at each sample the
+// point, the derivative along the edge (s) and across it into the patch (w, with w = ±u so
+// that +w points inside), and the second derivatives, all from one tabulation of the
+// separable form.
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf {
+
+struct EdgePoint {
+  Eigen::Vector3d X, s, w, ww, ss, sw;  // X, ∂s, ∂w, ∂²w, ∂²s, ∂s∂w
+};
+
+// The edge u = end (alongU false: it runs along v over [a0, a1]) or v = end (alongU true: it
+// runs along u over [a0, a1]) of `surface`, at `samples` evenly spaced points (both ends).
+std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU, int end, double a0, double a1, int samples);
+
+}  // namespace pdesurf

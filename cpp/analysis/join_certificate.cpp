@@ -1,0 +1,167 @@
+#include "analysis/join_certificate.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/edge_samples.hpp"
+#include "common/errors.hpp"
+#include "surface/mesh.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+// What a patch promises at its joins: the lowest continuity any coordinate's order gives
+// (2nd G0, 4th G1, 6th G2); a membrane Bézier fixes one ring (G0), a thin plate two (G1).
+int promisedLevel(const Patch& p) {
+  if (p.kind == PatchKind::Bezier) return p.bezier.energy == BezierEnergy::ThinPlate ? 1 : 0;
+  int order = 6;
+  for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
+  return order / 2 - 1;
+}
+
+// The tangent plane at an edge point from the first non-vanishing derivative across the edge.
+struct Side {
+  bool regular = false;      // the tangent plane exists here
+  bool firstOrder = false;   // ... and the speed across does not vanish (curvature measurable)
+  Eigen::Vector3d n, inward; // unit normal; the direction into the patch, across the edge
+};
+
+Side sideAt(const EdgePoint& p, double floor) {
+  Side side;
+  if (p.s.norm() <= floor) return side;  // the edge's own parametrisation stops (a pole)
+  side.firstOrder = p.w.norm() > floor;
+  const Eigen::Vector3d w = side.firstOrder ? p.w : p.ww;  // w = 0: X ≈ X0 + ½ X_ww w², inward along X_ww
+  const Eigen::Vector3d n = p.s.cross(w);
+  if (!(n.norm() > 1e-12 * p.s.norm() * w.norm())) return side;
+  side.regular = true;
+  side.n = n.normalized();
+  const Eigen::Vector3d sh = p.s.normalized();
+  side.inward = w - w.dot(sh) * sh;
+  return side;
+}
+
+// Normal curvature in the unit direction m of the tangent plane, the normal oriented as n.
+double normalCurvature(const EdgePoint& p, const Eigen::Vector3d& n, const Eigen::Vector3d& m) {
+  Eigen::Matrix2d I;
+  I << p.s.dot(p.s), p.s.dot(p.w), p.s.dot(p.w), p.w.dot(p.w);
+  const Eigen::Vector2d ab = I.ldlt().solve(Eigen::Vector2d(p.s.dot(m), p.w.dot(m)));
+  const double a = ab(0), b = ab(1);
+  const double II = a * a * p.ss.dot(n) + 2 * a * b * p.sw.dot(n) + b * b * p.ww.dot(n);
+  return II / (a * a * I(0, 0) + 2 * a * b * I(0, 1) + b * b * I(1, 1));
+}
+
+JoinResult certifyOne(const Patch& primary, const SolvedPatch& prim, const SolvedPatch& target, double size) {
+  const Meets& m = primary.meets;
+  const SeparableSurface& ts = target.surface;
+  JoinResult r;
+  r.patch = m.patch;
+  r.end = std::string(m.alongU ? "v" : "u") + (m.end ? "1" : "0");
+  r.surface = primary.name;
+  r.edge = m.atT1 ? "t1" : "t0";
+  r.level = promisedLevel(*target.patch);
+  // The target's border parameter runs over its own range; the primary's v over the given
+  // interval, else (PDE) the same v as the target, else (Bézier) the primary's v-range.
+  const double a0 = m.alongU ? ts.u0 : ts.v0, a1 = m.alongU ? ts.u1 : ts.v1;
+  double p0 = m.v0, p1 = m.v1;
+  if (std::isnan(p0)) {
+    const bool sameV = target.patch->kind == PatchKind::Pde;
+    p0 = sameV ? a0 : prim.surface.v0;
+    p1 = sameV ? a1 : prim.surface.v1;
+  }
+  const auto B = edgeSamples(ts, m.alongU, m.end, a0, a1, kJoinSamples);
+  const auto P = edgeSamples(prim.surface, false, m.atT1 ? 1 : 0, p0, p1, kJoinSamples);
+  const double floor = 1e-9 * size;
+  int measured = 0;
+  double worstFigure = -1.0;
+  for (int k = 0; k < kJoinSamples; ++k) {
+    const double v = p0 + (p1 - p0) * k / (kJoinSamples - 1);
+    const double gap = (B[k].X - P[k].X).norm() / size;
+    r.g0 = std::max(r.g0, gap);
+    double figure = gap;
+    const Side b = sideAt(B[k], floor), p = sideAt(P[k], floor);
+    if (b.regular && p.regular) {
+      // Both leave the shared edge: on opposite sides of it, or the join folds.
+      if (b.inward.dot(p.inward) > 0) r.fold = true;
+      const double deg = std::atan2(b.n.cross(p.n).norm(), std::abs(b.n.dot(p.n))) * 180.0 / M_PI;
+      r.g1Deg = std::max(r.g1Deg, deg);
+      if (r.level >= 1) figure = deg;
+      if (r.level == 2) {
+        if (b.firstOrder && p.firstOrder) {
+          const Eigen::Vector3d across = b.n.cross(B[k].s).normalized();
+          const Eigen::Vector3d np = p.n.dot(b.n) < 0 ? Eigen::Vector3d(-p.n) : p.n;
+          const double kb = normalCurvature(B[k], b.n, across), kp = normalCurvature(P[k], np, across);
+          const double rel = std::abs(kb - kp) / std::max({std::abs(kb), std::abs(kp), 1.0 / size});
+          r.g2Rel = std::max(r.g2Rel, rel);
+          figure = rel;
+          ++measured;
+        } else {
+          ++r.degenerate;
+        }
+      } else {
+        ++measured;
+      }
+    } else {
+      ++r.degenerate;
+      if (r.level == 0) ++measured;
+    }
+    if (figure > worstFigure) worstFigure = figure, r.worstV = v;
+  }
+  // Far beyond rounding: the primary's edge is not this border at all; a scene error.
+  if (r.g0 > 1e-3)
+    throw Error(ErrorCode::InvalidField, "edge " + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
+                                             "': they are " + std::to_string(r.g0 * size) + " apart at v = " + std::to_string(r.worstV));
+  r.ok = r.g0 <= kG0Tolerance && !r.fold && measured > 0 && (r.level < 1 || r.g1Deg <= kG1ToleranceDeg) &&
+         (r.level < 2 || r.g2Rel <= kG2Tolerance);
+  return r;
+}
+
+const SolvedPatch& solvedOf(const std::vector<SolvedPatch>& solved, const std::string& name) {
+  for (const SolvedPatch& s : solved)
+    if (s.patch->name == name) return s;
+  throw Error(ErrorCode::UnknownName, "no solved patch named '" + name + "'");
+}
+
+}  // namespace
+
+const char* levelName(int level) { return level <= 0 ? "G0" : level == 1 ? "G1" : "G2"; }
+
+double sceneSizeOf(const std::vector<SolvedPatch>& solved) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (const SolvedPatch& sp : solved) {
+    const GridSamples g = sampleGrid(sp.surface, 32, 32);
+    for (size_t k = 0; k < g.X.size(); k += 3) lo = lo.cwiseMin(Eigen::Vector3d(&g.X[k])), hi = hi.cwiseMax(Eigen::Vector3d(&g.X[k]));
+  }
+  const double d = (hi - lo).norm();
+  return std::isfinite(d) && d > 0 ? d : 1.0;
+}
+
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double size) {
+  std::vector<JoinResult> out;
+  for (size_t i = 0; i < solved.size(); ++i) {
+    const Patch& p = *solved[i].patch;
+    if (p.kind != PatchKind::Primary || p.meets.patch.empty()) continue;
+    const SolvedPatch& target = solvedOf(solved, p.meets.patch);
+    try {
+      out.push_back(certifyOne(p, solved[i], target, size));
+    } catch (const Error& e) {
+      size_t index = 0;
+      while (index < scene.patches.size() && &scene.patches[index] != &p) ++index;
+      throw Error(e.code(), "patches[" + std::to_string(index) + "].meets: " + e.what());
+    }
+  }
+  return out;
+}
+
+SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid) {
+  SceneReport r;
+  r.sceneSize = sceneSizeOf(solved);
+  r.joins = certifyJoins(scene, solved, r.sceneSize);
+  if (crossingGrid > 0) r.crossings = findCrossings(scene, solved, r.sceneSize, crossingGrid);
+  r.ok = r.crossings.empty();
+  for (const JoinResult& j : r.joins) r.ok = r.ok && j.ok;
+  return r;
+}
+
+}  // namespace pdesurf

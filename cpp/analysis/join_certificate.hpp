@@ -1,0 +1,50 @@
+// The join certificate (docs/analysis.md): along every declared join (a primary surface's
+// `meets`: a PDE patch end or a Bézier border) the position gap, the tangent-plane angle, the
+// normal-curvature mismatch across the join and a fold test, from analytic derivatives at
+// kJoinSamples points; a verdict against what the patch promises (2nd order G0, 4th G1, 6th
+// G2; a membrane Bézier G0, a thin plate G1); plus the crossings found (analysis/crossings).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "analysis/crossings.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+constexpr int kJoinSamples = 256;
+constexpr double kG0Tolerance = 1e-9;   // of the scene's size
+constexpr double kG1ToleranceDeg = 1e-6;
+constexpr double kG2Tolerance = 1e-6;   // relative
+
+struct JoinResult {
+  std::string patch;    // the PDE or Bézier patch
+  std::string end;      // "u0", "u1", "v0", "v1"
+  std::string surface;  // the primary surface
+  std::string edge;     // "t0" or "t1"
+  int level = 0;        // promised: 0 G0, 1 G1, 2 G2
+  double g0 = 0.0;      // largest gap / scene size
+  double g1Deg = 0.0;   // largest tangent-plane angle, degrees (level >= 1 and measured)
+  double g2Rel = 0.0;   // largest relative normal-curvature mismatch across (level 2 only)
+  double worstV = 0.0;  // the primary's v where the promised figure is worst
+  bool fold = false;    // both surfaces leave the edge on the same side somewhere
+  int degenerate = 0;   // points where the promised figure cannot be measured (zero speed, pole)
+  bool ok = false;
+};
+
+struct SceneReport {
+  double sceneSize = 0.0;  // bounding-box diagonal of every patch (32×32 samples)
+  std::vector<JoinResult> joins;
+  std::vector<Crossing> crossings;
+  bool ok = true;  // every join keeps its promise and nothing crosses
+};
+
+const char* levelName(int level);  // "G0", "G1", "G2"
+
+// sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf).
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize);
+double sceneSizeOf(const std::vector<SolvedPatch>& solved);
+// Joins, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
+SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);
+
+}  // namespace pdesurf
