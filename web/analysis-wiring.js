@@ -58,8 +58,9 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
   }
 
   function applyJoins() {
-    if (!report) {
-      joins.message(hasAnalysis ? 'no join report for this scene' : NO_REPORT);
+    if (!report || report.error) {
+      joins.message(report ? `cannot certify the joins: ${report.error.code}: ${report.error.message}`
+        : hasAnalysis ? 'no join report for this scene' : NO_REPORT);
       joins.folder.title('Joins');
       viewer.highlightJoins([]);
       return;
@@ -89,12 +90,12 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
     settings,
     /** What to ask the module for in the next solve. */
     solveOptions() {
-      return { curvature: curvatureMode(), joins: true };
+      return hasAnalysis ? { curvature: curvatureMode(), joins: true } : {};
     },
     /** After a good solve (the viewer already has the meshes). */
     solved(result, options) {
       patches = result.patches;
-      asked = { ...options };
+      asked = { curvature: Boolean(options.curvature), joins: Boolean(options.joins) };
       report = normaliseReport(result.report);
       applyShading();
       applyJoins();

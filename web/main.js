@@ -124,7 +124,8 @@ async function start() {
   const share = createShareWiring({ viewer, panel, status, hooks });
   let quiet = false; // the next solve only adds analysis data: not a user's edit
   analysis = createAnalysisWiring({
-    panel, viewer, hasAnalysis: solver.analysis,
+    // false for a module built before solveSceneWith: no curvature, no join report
+    panel, viewer, hasAnalysis: typeof solver.module?.solveSceneWith === 'function',
     requestSolve: () => {
       quiet = true;
       scheduler.request();

@@ -47,8 +47,6 @@ export async function loadSolver(opts = {}) {
   }
   return {
     module: Module,
-    // false for a module built before solveSceneWith (no curvature, no join report)
-    analysis: typeof Module.solveSceneWith === 'function',
     solve: (scene, grid = {}) => solveWith(Module, scene, grid),
   };
 }

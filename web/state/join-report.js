@@ -2,6 +2,11 @@
 // checked data for the joins panel and the highlights. Pure: unit-tested in tests/js.
 // Every string from the scene stays a string; the panel shows it with textContent.
 
+// The blend's end: 0 (u = 0) or 1 (u = 1), given as a number or as "u0" / "u1".
+function endOf(e) {
+  return e === 1 || e === '1' || e === 'u1' ? 1 : 0;
+}
+
 const num = (x) => (x === null || x === undefined ? null : Number(x));
 const LEVELS = new Set(['G0', 'G1', 'G2']);
 
@@ -10,7 +15,7 @@ export function normaliseReport(raw) {
   if (!raw || typeof raw !== 'object') return null;
   const joins = Array.from(raw.joins || [], (j) => ({
     patch: String(j.patch),
-    end: Number(j.end) === 1 ? 1 : 0,
+    end: endOf(j.end),
     surface: String(j.surface ?? ''),
     edge: String(j.edge ?? ''),
     level: LEVELS.has(String(j.level)) ? String(j.level) : String(j.level ?? '?'),
@@ -20,6 +25,7 @@ export function normaliseReport(raw) {
     fold: Boolean(j.fold),
     ok: Boolean(j.ok),
     degenerate: Number(j.degenerate) || 0,
+    worstV: num(j.worstV), // where along the join the worst measure is
   }));
   const crossings = Array.from(raw.crossings || [], (c) => ({
     patch: String(c.patch),
@@ -27,7 +33,10 @@ export function normaliseReport(raw) {
     u: Array.from(c.u || [], Number),
     v: Array.from(c.v || [], Number),
   }));
-  return { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings };
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings };
+  // A declared join the module cannot certify: the scene still draws, the report says why.
+  if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
+  return out;
 }
 
 /** A stable key for one join: the blend's name and its end. */
@@ -47,6 +56,7 @@ export function joinFigures(j) {
     ['G1 angle', j.g1Deg === null ? '—' : `${sig(j.g1Deg)}°`],
     ['G2 mismatch', j.g2Rel === null ? '—' : `${sig(100 * j.g2Rel)} %`],
     ['fold', j.fold ? 'yes' : 'no'],
+    ...(j.worstV !== null && Number.isFinite(j.worstV) ? [['worst at v', sig(j.worstV, 3)]] : []),
   ];
 }
 
