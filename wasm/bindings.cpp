@@ -6,6 +6,7 @@
 
 #include <new>
 
+#include "analysis/join_certificate.hpp"
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
 #include "ode/basis_cache.hpp"
@@ -90,7 +91,56 @@ val failure(const char* code, const std::string& message) {
   return r;
 }
 
-val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
+// The join certificate as plain data (docs/wasm-api.md); crossings on a 48×48 mesh per patch.
+val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved) {
+  val report = val::object();
+  try {
+    const SceneReport r = checkScene(scene, solved, 48);
+    report.set("ok", r.ok);
+    report.set("sceneSize", r.sceneSize);
+    val joins = val::array();
+    for (const JoinResult& j : r.joins) {
+      val o = val::object();
+      o.set("patch", j.patch);
+      o.set("end", j.end);
+      o.set("surface", j.surface);
+      o.set("edge", j.edge);
+      o.set("level", std::string(levelName(j.level)));
+      o.set("g0", j.g0);
+      o.set("g1_deg", j.g1Deg);
+      o.set("g2_rel", j.level == 2 ? val(j.g2Rel) : val::null());
+      o.set("fold", j.fold);
+      o.set("degenerate", j.degenerate);
+      o.set("worstV", j.worstV);
+      o.set("ok", j.ok);
+      joins.call<void>("push", o);
+    }
+    report.set("joins", joins);
+    val crossings = val::array();
+    for (const Crossing& c : r.crossings) {
+      val o = val::object();
+      o.set("patch", c.patch);
+      o.set("other", c.other);
+      o.set("u", val::array(std::vector<double>{c.u[0], c.u[1]}));
+      o.set("v", val::array(std::vector<double>{c.v[0], c.v[1]}));
+      o.set("triangles", c.triangles);
+      crossings.call<void>("push", o);
+    }
+    report.set("crossings", crossings);
+  } catch (const Error& e) {
+    // A scene whose declared join is wrong still draws; the report says why it cannot certify.
+    val err = val::object();
+    err.set("code", std::string(errorCodeName(e.code())));
+    err.set("message", std::string(e.what()));
+    report.set("ok", false);
+    report.set("error", err);
+    report.set("joins", val::array());
+    report.set("crossings", val::array());
+  }
+  return report;
+}
+
+val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, bool joins) {
   try {
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
@@ -107,7 +157,7 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
       const SolvedPatch& sp = solved[k];
       Mesh& m = meshes[k];
       try {
-        tessellateInto(sp.surface, nu, nv, m);
+        tessellateInto(sp.surface, nu, nv, m, curvature);
       } catch (const Error& e) {
         throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
       }
@@ -126,12 +176,18 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
       p.set("normals", copyOut(m.normals));
       p.set("uvs", copyOut(m.uvs));
       p.set("indices", copyOut(m.indices));
+      if (curvature) {
+        p.set("meanCurvature", copyOut(m.meanCurvature));
+        p.set("gaussCurvature", copyOut(m.gaussCurvature));
+        p.set("degenerateVertices", m.degenerateVertices);
+      }
       patches.call<void>("push", p);
     }
     val r = val::object();
     r.set("ok", true);
     r.set("title", scene.title);
     r.set("patches", patches);
+    if (joins) r.set("report", reportOf(scene, solved));
     return r;
   } catch (const Error& e) {
     return failure(errorCodeName(e.code()), e.what());
@@ -142,11 +198,24 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv) {
   }
 }
 
+val solveScenePlain(const std::string& sceneJson, int nu, int nv) { return solveSceneJs(sceneJson, nu, nv, false, false); }
+
+// options: {curvature: bool, joins: bool}; anything else (or a missing key) counts as false.
+val solveSceneWith(const std::string& sceneJson, int nu, int nv, val options) {
+  const auto flag = [&](const char* key) {
+    if (options.isUndefined() || options.isNull() || options.typeOf().as<std::string>() != "object") return false;
+    const val v = options[key];
+    return v.typeOf().as<std::string>() == "boolean" && v.as<bool>();
+  };
+  return solveSceneJs(sceneJson, nu, nv, flag("curvature"), flag("joins"));
+}
+
 std::string version() { return "0.1.0"; }
 
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(pdesurf) {
-  emscripten::function("solveScene", &solveSceneJs);
+  emscripten::function("solveScene", &solveScenePlain);
+  emscripten::function("solveSceneWith", &solveSceneWith);
   emscripten::function("version", &version);
 }

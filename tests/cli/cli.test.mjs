@@ -193,3 +193,30 @@ test('Bezier patches: sample, export and --control-net', () => {
   assert.equal(pde.status, 1);
   assert.match(pde.stderr, /not a Bezier patch/);
 });
+
+test('check: one line per join, exit 0 when every promise holds, 1 with the failing join named', () => {
+  const ok = run('check', example('zhang-c2-ex1'));
+  assert.equal(ok.status, 0, ok.stderr);
+  const lines = ok.stdout.trim().split('\n');
+  assert.equal(lines.filter((l) => l.startsWith('join ')).length, 2);
+  assert.match(lines[0], /^join blend:u0 - cylinder:t0 {2}promise G2 .* ok$/);
+  assert.match(lines.at(-1), /^2 joins, 0 crossings: ok$/);
+
+  const loop = run('check', example('you2004-fig1'), '--json');
+  assert.equal(loop.status, 1);
+  const report = JSON.parse(loop.stdout);
+  assert.equal(report.ok, false);
+  assert.ok(report.joins.every((j) => j.ok && j.g0 < 1e-9 && j.g1_deg < 1e-6 && j.g2_rel === null && !j.fold));
+  assert.equal(report.crossings.length, 1);
+  const [c] = report.crossings;
+  assert.deepEqual([c.patch, c.other], ['blend', 'blend']);
+  assert.ok(c.u[0] > 0.39 && c.u[1] < 0.44 && c.v[0] > 5.4 && c.v[1] < 6.3, JSON.stringify(c));
+
+  const dir = mkdtempSync(join(tmpdir(), 'pdesurf-check-'));
+  const scene = JSON.parse(readFileSync(example('you2004-fig2a'), 'utf8'));
+  scene.patches[1].meets.patch = 'nowhere';
+  writeFileSync(join(dir, 'bad.json'), JSON.stringify(scene));
+  const bad = run('check', join(dir, 'bad.json'));
+  assert.equal(bad.status, 1);
+  assert.match(bad.stderr, /UnknownName: patches\[1\]\.meets\.patch: no pde or bezier patch named 'nowhere'/);
+});

@@ -51,7 +51,8 @@ TEST_CASE("certificate: the cone-plane blend keeps G1 at both joins, nothing cro
 TEST_CASE("certificate: a plane tilted at the trimline breaks G1 by its tilt angle") {
   auto j = fig2a();
   j["patches"][1]["z"] = "0.3*t";  // the plane's t-direction (0.5 radial, 0.3 up) against the blend's horizontal one
-  const JoinResult& plane = joinOf(check(j), "plane");
+  const SceneReport r = check(j);
+  const JoinResult& plane = joinOf(r, "plane");
   CHECK(plane.g0 < 1e-14);
   CHECK(plane.g1Deg == doctest::Approx(std::atan2(0.3, 0.5) * 180 / M_PI).epsilon(1e-9));
   CHECK(!plane.fold);

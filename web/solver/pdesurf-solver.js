@@ -51,14 +51,17 @@ export async function loadSolver(opts = {}) {
   };
 }
 
-// curvature / joins: ask the module for per-vertex H and K and for the join report
-// (docs/wasm-api.md); an older module without solveSceneWith solves without them.
 function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false } = {}) {
   const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
-  const extras = (curvature || joins) && typeof Module.solveSceneWith === 'function';
+  const analysis = Boolean(curvature) || Boolean(joins);
+  if (analysis && typeof Module.solveSceneWith !== 'function') {
+    throw new PdesurfError('Load', 'this solver module has no analysis (solveSceneWith): rebuild the wasm module');
+  }
   let res;
   try {
-    res = extras ? Module.solveSceneWith(text, nu, nv, { curvature, joins }) : Module.solveScene(text, nu, nv);
+    res = analysis
+      ? Module.solveSceneWith(text, nu, nv, { curvature: Boolean(curvature), joins: Boolean(joins) })
+      : Module.solveScene(text, nu, nv);
   } catch (err) {
     // Should not happen (the binding catches), but never let a raw throw escape.
     const msg = err instanceof Error ? err.message : `solver threw ${String(err)}`;
@@ -70,7 +73,25 @@ function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins =
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown solver error'));
   }
   const out = { patches: Array.from(res.patches || [], normalisePatch) };
-  if (res.report) out.report = res.report;
+  if (joins) out.report = normaliseReport(res.report);
+  return out;
+}
+
+// The join certificate (docs/analysis.md): plain numbers, booleans and strings only.
+function normaliseReport(r) {
+  if (!r || typeof r !== 'object') throw new PdesurfError('Internal', 'the solver returned no join report');
+  const joins = Array.from(r.joins || [], (j) => ({
+    patch: String(j.patch), end: String(j.end), surface: String(j.surface), edge: String(j.edge),
+    level: String(j.level), g0: Number(j.g0), g1_deg: Number(j.g1_deg),
+    g2_rel: j.g2_rel === null || j.g2_rel === undefined ? null : Number(j.g2_rel),
+    fold: Boolean(j.fold), degenerate: Number(j.degenerate), worstV: Number(j.worstV), ok: Boolean(j.ok),
+  }));
+  const crossings = Array.from(r.crossings || [], (c) => ({
+    patch: String(c.patch), other: String(c.other),
+    u: Array.from(c.u, Number), v: Array.from(c.v, Number), triangles: Number(c.triangles),
+  }));
+  const out = { ok: Boolean(r.ok), sceneSize: Number(r.sceneSize), joins, crossings };
+  if (r.error) out.error = { code: String(r.error.code), message: String(r.error.message) };
   return out;
 }
 
@@ -90,9 +111,10 @@ function normalisePatch(p) {
     indices: typed(p.indices, Uint32Array, 'indices'),
   };
   if (p.meanCurvature !== undefined) {
+    // Mean H (signed with respect to the drawn normal) and Gaussian K per vertex; 0 where degenerate.
     out.meanCurvature = typed(p.meanCurvature, Float32Array, 'meanCurvature');
     out.gaussCurvature = typed(p.gaussCurvature, Float32Array, 'gaussCurvature');
-    out.degenerateVertices = Number(p.degenerateVertices) || 0;
+    out.degenerateVertices = Number(p.degenerateVertices);
   }
   if (p.operator) {
     // Per coordinate: { order, params: { name: value } } with the scene's own names.
