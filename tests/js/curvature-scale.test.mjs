@@ -74,8 +74,9 @@ test('the join report is normalised and names stay strings', () => {
   assert.equal(r.joins[1].g1Deg, 3.5);
   assert.deepEqual(r.crossings[0].u, [0.9, 1]);
   assert.equal(normaliseReport(undefined), null);
-  assert.equal(normaliseReport({ joins: [{ patch: 'b', end: 'u1' }] }).joins[0].end, 1);
-  assert.equal(normaliseReport({ joins: [{ patch: 'b', end: '0' }] }).joins[0].end, 0);
+  assert.equal(normaliseReport({ joins: [{ patch: 'b', end: 'u1' }] }).joins[0].end, 'u1');
+  assert.equal(normaliseReport({ joins: [{ patch: 'b', end: 'v0' }] }).joins[0].end, 'v0');
+  assert.equal(normaliseReport({ joins: [{ patch: 'b', end: 1 }] }).joins[0].end, 'u1');
   assert.deepEqual(normaliseReport({ ok: false, error: { code: 'InvalidField', message: 'x' } }).error, { code: 'InvalidField', message: 'x' });
   const figs = Object.fromEntries(joinFigures(r.joins[1]));
   assert.equal(figs['G1 angle'], '3.5°');

@@ -2,9 +2,13 @@
 // checked data for the joins panel and the highlights. Pure: unit-tested in tests/js.
 // Every string from the scene stays a string; the panel shows it with textContent.
 
-// The blend's end: 0 (u = 0) or 1 (u = 1), given as a number or as "u0" / "u1".
+// The side of the blend that joins: "u0", "u1" (the ends u = 0, 1) or "v0", "v1" (the
+// edges v = 0, 1 of a Bézier patch); a bare 0 / 1 means u0 / u1.
+const SIDES = new Set(['u0', 'u1', 'v0', 'v1']);
 function endOf(e) {
-  return e === 1 || e === '1' || e === 'u1' ? 1 : 0;
+  const s = String(e);
+  if (SIDES.has(s)) return s;
+  return s === '1' ? 'u1' : 'u0';
 }
 
 const num = (x) => (x === null || x === undefined ? null : Number(x));

@@ -3,7 +3,7 @@
 // verdict), the crossings found, and a checkbox per join that highlights it on the
 // surface (failing joins start ticked). Built with createElement/textContent only:
 // patch and surface names from a scene or a link are shown literally.
-// DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<end>"] with
+// DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<side>"] with
 // data-verdict="ok" | "fail", its checkbox input, .joins-crossing, .joins-message.
 import { joinFigures, crossingText, joinKey } from '../state/join-report.js';
 
@@ -38,7 +38,7 @@ export function buildJoinsFolder(gui, onToggle) {
     const what = el('span', 'joins-what');
     what.append(
       el('span', 'joins-name', `“${j.patch}”`),
-      document.createTextNode(` end ${j.end} → `),
+      document.createTextNode(` ${j.end} → `),
       el('span', 'joins-name', `“${j.surface}”`),
       document.createTextNode(j.edge ? ` (${j.edge})` : ''),
     );

@@ -1,6 +1,7 @@
 // Highlights of joins on the surface: a thick line (three's Line2, width in pixels)
 // along the boundary row of a blend where it meets a surface. The patch's vertex (i, j)
-// is at j*(nu+1)+i, so end 0 is the column i = 0 and end 1 the column i = nu.
+// is at j*(nu+1)+i, so side u0 is the column i = 0, u1 the column i = nu, v0 the row
+// j = 0 and v1 the row j = nv.
 // Failing joins are red, the others ticked in the joins panel yellow.
 import * as THREE from 'three';
 import { Line2 } from 'three/addons/lines/Line2.js';
@@ -17,14 +18,16 @@ export function gridOf(patch) {
   return { nu, nv: V / (nu + 1) - 1 };
 }
 
-/** Positions (flat, 3 per point) of the column i = 0 (end 0) or i = nu (end 1). */
-export function boundaryColumn(patch, end) {
+/** Positions (flat, 3 per point) along one side: "u0", "u1", "v0" or "v1". */
+export function boundaryLine(patch, side) {
   const { nu, nv } = gridOf(patch);
-  const i = end === 1 ? nu : 0;
-  const out = new Float32Array(3 * (nv + 1));
-  for (let j = 0; j <= nv; j++) {
-    const k = 3 * (j * (nu + 1) + i);
-    out.set(patch.positions.subarray(k, k + 3), 3 * j);
+  const alongV = side === 'u0' || side === 'u1'; // a column: j runs
+  const n = alongV ? nv : nu;
+  const fixed = side === 'u1' ? nu : side === 'v1' ? nv : 0;
+  const out = new Float32Array(3 * (n + 1));
+  for (let t = 0; t <= n; t++) {
+    const k = 3 * (alongV ? t * (nu + 1) + fixed : fixed * (nu + 1) + t);
+    out.set(patch.positions.subarray(k, k + 3), 3 * t);
   }
   return out;
 }
@@ -41,7 +44,7 @@ export function createJoinHighlight(overlays) {
   const resolution = new THREE.Vector2(1, 1);
 
   return {
-    /** items: [{ key, patch (solved patch), end, fail }] */
+    /** items: [{ key, patch (solved patch), end ("u0" | "u1" | "v0" | "v1"), fail }] */
     show(items) {
       for (const l of [...group.children]) {
         group.remove(l);
@@ -50,7 +53,7 @@ export function createJoinHighlight(overlays) {
       for (const { key, patch, end, fail } of items) {
         if (!patch || patch.positions.length < 6) continue;
         const g = new LineGeometry();
-        g.setPositions(boundaryColumn(patch, end));
+        g.setPositions(boundaryLine(patch, end));
         const line = new Line2(g, fail ? materials.fail : materials.pick);
         line.computeLineDistances();
         line.renderOrder = 10;
