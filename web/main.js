@@ -14,17 +14,22 @@ import { decodeFragment } from './link/link-codec.js';
 import { installTestHooks } from './test-hooks.js';
 import { createBezierWiring } from './bezier-wiring.js';
 import { createShareWiring } from './share-wiring.js';
+import { createAnalysisWiring } from './analysis-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
 let viewer = null;
+let analysis = null;
 const bezier = createBezierWiring();
 const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), () => viewer?.getCamera() ?? null, {
   overlays: () => viewer?.overlayCounts() ?? null,
   editing: () => viewer?.editor.active() ?? null,
   controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
+  analysis: () => analysis?.state() ?? null,
+  patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
+  vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
 });
 
 function messageOf(err) {
@@ -117,6 +122,15 @@ async function start() {
 
   bezier.connect({ state, viewer, panel, scheduler, status });
   const share = createShareWiring({ viewer, panel, status, hooks });
+  let quiet = false; // the next solve only adds analysis data: not a user's edit
+  analysis = createAnalysisWiring({
+    // false for a module built before solveSceneWith: no curvature, no join report
+    panel, viewer, hasAnalysis: typeof solver.module?.solveSceneWith === 'function',
+    requestSolve: () => {
+      quiet = true;
+      scheduler.request();
+    },
+  });
 
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
@@ -125,6 +139,7 @@ async function start() {
     state.setScene(scene, exampleId);
     viewer.resetOverlays();
     bezier.reset();
+    analysis.newScene();
     hooks.exampleId = exampleId;
     panel.showScene(scene);
     gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
@@ -190,13 +205,15 @@ async function start() {
   function solveNow() {
     if (!state.scene) return;
     hooks.solveCount++;
-    const edited = !opening;
+    const edited = !opening && !quiet;
     opening = false;
+    quiet = false;
     const text = state.text();
+    const options = analysis.solveOptions();
     const t0 = performance.now();
     let result;
     try {
-      result = solver.solve(text, state.grid);
+      result = solver.solve(text, { ...state.grid, ...options });
     } catch (err) {
       if (linkPending) {
         // The link decoded but its scene does not solve: nothing good to keep on screen.
@@ -213,6 +230,7 @@ async function start() {
     linkPending = false;
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
+    analysis.solved(result, options);
     if (cameraPending) viewer.setCamera(cameraPending);
     else if (fitPending) viewer.fit();
     cameraPending = null;

@@ -3,6 +3,8 @@
 // descriptions are shown as text whatever they contain.
 // DOM hooks: #gallery, data-example="<id>" on each entry's button.
 
+const PHONE = '(max-width: 700px)'; // web/style.css's phone layout
+
 function el(tag, className, text) {
   const node = document.createElement(tag);
   if (className) node.className = className;
@@ -61,11 +63,18 @@ export function createGallery(root, examples, onOpen) {
   root.append(head, list);
 
   // Collapsing gives the whole window to the view (the layout follows a body class).
-  toggle.addEventListener('click', () => {
-    const closed = document.body.classList.toggle('gallery-closed');
+  function setClosed(closed) {
+    document.body.classList.toggle('gallery-closed', closed);
     toggle.textContent = closed ? '›' : '‹';
     toggle.title = closed ? 'show the examples' : 'hide the examples';
     toggle.setAttribute('aria-expanded', String(!closed));
+  }
+  toggle.addEventListener('click', () => setClosed(!document.body.classList.contains('gallery-closed')));
+  // At phone size the gallery opens over the view: start closed, close after a pick.
+  const phone = window.matchMedia(PHONE);
+  if (phone.matches) setClosed(true);
+  list.addEventListener('click', (ev) => {
+    if (phone.matches && ev.target.closest('[data-example]')) setClosed(true);
   });
 
   let active = null;

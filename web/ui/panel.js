@@ -36,8 +36,11 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let operators = null;
   let bezier = null;
   let expressions = null;
-  // Scene folders are appended as they are built; keep share and grid last.
+  // Scene folders are appended as they are built; keep the fixed folders (analysis and
+  // joins, see keepAtEnd), share and grid last.
+  const fixed = [];
   const fixedToEnd = () => {
+    for (const el of fixed) gui.$children.appendChild(el);
     gui.$children.appendChild(share.folder);
     gui.$children.appendChild(gridFolder.domElement);
   };
@@ -54,6 +57,12 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
 
   return {
     gui,
+
+    /** Folders (their elements) built outside that stay after the scene folders, before share. */
+    keepAtEnd(...elements) {
+      fixed.push(...elements);
+      fixedToEnd();
+    },
 
     /** New scene: fresh parameter sliders; operator and function folders wait for its first solve. */
     showScene(next) {

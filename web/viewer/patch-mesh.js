@@ -13,6 +13,10 @@ function makeMaterial(color) {
     roughness: 0.55,
     metalness: 0.05,
     side: THREE.DoubleSide,
+    // The wireframe overlay (viewer/shading.js) draws over the faces without z-fighting.
+    polygonOffset: true,
+    polygonOffsetFactor: 1,
+    polygonOffsetUnits: 1,
   });
 }
 
@@ -39,5 +43,9 @@ export function meshFromPatch(patch) {
   const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
   mesh.userData = { kind: patch.kind, patchName: patch.name };
+  // Per-vertex H and K from the module (solveSceneWith {curvature: true}), for the colour maps.
+  if (patch.meanCurvature) {
+    mesh.userData.curvature = { meanCurvature: patch.meanCurvature, gaussCurvature: patch.gaussCurvature };
+  }
   return mesh;
 }

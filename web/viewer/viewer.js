@@ -7,6 +7,8 @@ import { meshFromPatch } from './patch-mesh.js';
 import { fitCameraToObject } from './fit-camera.js';
 import { createBezierLayer } from './bezier-layer.js';
 import { createControlPointEditor } from './control-point-editor.js';
+import { createShading } from './shading.js';
+import { createJoinHighlight } from './join-highlight.js';
 
 export const BACKGROUND = 0x20242b;
 
@@ -39,6 +41,8 @@ export function createViewer(container, bezierEditing) {
   const overlays = new THREE.Group();
   scene.add(overlays);
   const bezier = createBezierLayer(overlays);
+  const shading = createShading(surfaces, overlays);
+  const joins = createJoinHighlight(overlays);
 
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.addEventListener('change', render);
@@ -56,6 +60,7 @@ export function createViewer(container, bezierEditing) {
     renderer.setSize(w, h, false);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
+    joins.setResolution(w, h);
     render();
   }
   new ResizeObserver(resize).observe(container);
@@ -74,9 +79,41 @@ export function createViewer(container, bezierEditing) {
         m.geometry.dispose(); // materials are shared, keep them
       }
       for (const p of patches) surfaces.add(meshFromPatch(p));
+      shading.refresh();
       bezier.update(patches);
       editor.refresh();
       render();
+    },
+
+    /** Shading mode (viewer/shading.js MODES); range { min, max } for the curvature maps. */
+    setShading(mode, range = null) {
+      shading.setMode(mode, range);
+      render();
+    },
+
+    /** Zebra stripes: { angleDeg, widthDeg }. */
+    setZebra(opts) {
+      shading.setZebra(opts);
+      render();
+    },
+
+    setWireframe(on) {
+      shading.setWireframe(on);
+      render();
+    },
+
+    /** Thick lines along joins: [{ key, patch (solved), end, fail }]. */
+    highlightJoins(items) {
+      joins.show(items);
+      render();
+    },
+
+    /** The colour ramp (three's Lut) the curvature maps use. */
+    ramp: shading.lut,
+
+    /** For the tests: { mode, wireframe, highlights: [keys] }. */
+    analysisState() {
+      return { ...shading.state(), highlights: joins.keys() };
     },
 
     /** Show or hide one overlay (solvedNet, initialNet, normals) of a bezier patch. */
@@ -107,6 +144,15 @@ export function createViewer(container, bezierEditing) {
       const v = new THREE.Vector3().fromArray(xyz).project(camera);
       const rect = renderer.domElement.getBoundingClientRect();
       return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
+    },
+
+    /** Where vertex k of the patch named `name` appears in the page, or null. */
+    vertexScreen(name, k) {
+      const m = surfaces.children.find((c) => c.name === name);
+      if (!m) return null;
+      const p = m.geometry.getAttribute('position');
+      if (k < 0 || k >= p.count) return null;
+      return this.screenOf([p.getX(k), p.getY(k), p.getZ(k)]);
     },
 
     /** Frame everything drawn (on example change only: slider moves keep the view). */

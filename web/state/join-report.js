@@ -1,0 +1,85 @@
+// The module's join report (docs/wasm-api.md, solveSceneWith {joins: true}) as plain,
+// checked data for the joins panel and the highlights. Pure: unit-tested in tests/js.
+// Every string from the scene stays a string; the panel shows it with textContent.
+
+// The side of the blend that joins: "u0", "u1" (the ends u = 0, 1) or "v0", "v1" (the
+// edges v = 0, 1 of a Bézier patch); a bare 0 / 1 means u0 / u1.
+const SIDES = new Set(['u0', 'u1', 'v0', 'v1']);
+function endOf(e) {
+  const s = String(e);
+  if (SIDES.has(s)) return s;
+  return s === '1' ? 'u1' : 'u0';
+}
+
+const num = (x) => (x === null || x === undefined ? null : Number(x));
+const LEVELS = new Set(['G0', 'G1', 'G2']);
+
+/** null when the module gave no report (an older module, or not asked). */
+export function normaliseReport(raw) {
+  if (!raw || typeof raw !== 'object') return null;
+  const joins = Array.from(raw.joins || [], (j) => ({
+    patch: String(j.patch),
+    end: endOf(j.end),
+    surface: String(j.surface ?? ''),
+    edge: String(j.edge ?? ''),
+    level: LEVELS.has(String(j.level)) ? String(j.level) : String(j.level ?? '?'),
+    g0: num(j.g0),
+    g1Deg: num(j.g1_deg),
+    g2Rel: num(j.g2_rel),
+    fold: Boolean(j.fold),
+    ok: Boolean(j.ok),
+    degenerate: Number(j.degenerate) || 0,
+    worstV: num(j.worstV), // where along the join the worst measure is
+  }));
+  const crossings = Array.from(raw.crossings || [], (c) => ({
+    patch: String(c.patch),
+    other: String(c.other),
+    u: Array.from(c.u || [], Number),
+    v: Array.from(c.v || [], Number),
+  }));
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings };
+  // A declared join the module cannot certify: the scene still draws, the report says why.
+  if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
+  return out;
+}
+
+/** A stable key for one join: the blend's name and its end. */
+export const joinKey = (j) => `${j.patch}\u0000${j.end}`;
+
+const sig = (x, digits = 2) => {
+  if (x === null || !Number.isFinite(x)) return '—';
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  return a < 1e-3 || a >= 1e4 ? x.toExponential(digits - 1) : Number(x.toPrecision(digits)).toString();
+};
+
+/** The measured numbers of one join as short labelled strings (no markup). */
+export function joinFigures(j) {
+  return [
+    ['G0 gap', sig(j.g0)],
+    ['G1 angle', j.g1Deg === null ? '—' : `${sig(j.g1Deg)}°`],
+    ['G2 mismatch', j.g2Rel === null ? '—' : `${sig(100 * j.g2Rel)} %`],
+    ['fold', j.fold ? 'yes' : 'no'],
+    ...(j.worstV !== null && Number.isFinite(j.worstV) ? [['worst at v', sig(j.worstV, 3)]] : []),
+  ];
+}
+
+/** One line per crossing. */
+export function crossingText(c) {
+  const range = (r) => (r.length === 2 ? `[${sig(r[0], 3)}, ${sig(r[1], 3)}]` : '?');
+  return `“${c.patch}” crosses “${c.other}” at u ∈ ${range(c.u)}, v ∈ ${range(c.v)}`;
+}
+
+/**
+ * Which joins are highlighted: failing ones unless the user unticked them, others when
+ * ticked. overrides: Map key -> bool (the user's ticks).
+ */
+export function highlightedKeys(report, overrides) {
+  const out = [];
+  for (const j of report ? report.joins : []) {
+    const k = joinKey(j);
+    const on = overrides.has(k) ? overrides.get(k) : !j.ok;
+    if (on) out.push(k);
+  }
+  return out;
+}
