@@ -20,7 +20,6 @@ struct PatchGrid {
   const Patch* patch;
   double u0, u1, v0, v1;
   bool closedU = false, closedV = false;  // first and last grid lines coincide (seams)
-  int skipU = -1, skipV = -1;  // not used per pair: see joinRow
 };
 
 // Segment pq against the interior of triangle abc (Möller-Trumbore, strict with margin eps).
@@ -83,8 +82,7 @@ int cellDistance(int a, int b, int n, bool closed) {
 
 }  // namespace
 
-std::vector<Crossing> findCrossings(const Scene& scene, const std::vector<SolvedPatch>& solved, double size, int grid) {
-  (void)scene;
+std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
   const int P = static_cast<int>(solved.size());
   std::vector<PatchGrid> grids(P);
   std::vector<Tri> tris;

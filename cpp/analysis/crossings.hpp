@@ -19,6 +19,6 @@ struct Crossing {
   int triangles = 0;  // crossing triangle pairs found
 };
 
-std::vector<Crossing> findCrossings(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
+std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
 
 }  // namespace pdesurf

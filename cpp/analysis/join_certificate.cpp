@@ -158,7 +158,7 @@ SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solve
   SceneReport r;
   r.sceneSize = sceneSizeOf(solved);
   r.joins = certifyJoins(scene, solved, r.sceneSize);
-  if (crossingGrid > 0) r.crossings = findCrossings(scene, solved, r.sceneSize, crossingGrid);
+  if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);
   r.ok = r.crossings.empty();
   for (const JoinResult& j : r.joins) r.ok = r.ok && j.ok;
   return r;

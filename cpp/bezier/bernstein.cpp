@@ -10,31 +10,28 @@
 namespace pdesurf {
 
 namespace {
-double binomial(int n, int k) {
-  double r = 1.0;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
+
+// d^k B_i^n = n!/(n-k)! Σ_j (-1)^{k-j} C(k, j) B_{i-j}^{n-k}: the forward differences of the
+// unit vector e_i, which have at most k + 1 non-zero entries. low[] = B^{n-k}(u).
+double basisDerivative(const double* low, int n, int i, int k) {
+  double s = 0.0, ckj = 1.0, scale = 1.0;
+  for (int q = 0; q < k; ++q) scale *= n - q;
+  for (int j = 0; j <= k; ++j) {
+    const int idx = i - j;
+    if (idx >= 0 && idx <= n - k) s += ((k - j) % 2 ? -1.0 : 1.0) * ckj * low[idx];
+    ckj = ckj * (k - j) / (j + 1);
+  }
+  return scale * s;
 }
+
 }  // namespace
 
 std::vector<double> bernstein(int n, double u, int k) {
   std::vector<double> out(n + 1, 0.0);
   if (k > n) return out;
-  // d^k B_i^n = n!/(n-k)! Σ_j (-1)^{k-j} C(k, j) B_{i-j}^{n-k}
-  const int d = n - k;
-  std::vector<double> low(d + 1);
-  for (int i = 0; i <= d; ++i) low[i] = binomial(d, i) * std::pow(u, i) * std::pow(1 - u, d - i);
-  double scale = 1.0;
-  for (int q = 0; q < k; ++q) scale *= n - q;
-  for (int i = 0; i <= n; ++i) {
-    double s = 0.0;
-    for (int j = 0; j <= k; ++j) {
-      const int idx = i - j;
-      if (idx < 0 || idx > d) continue;
-      s += ((k - j) % 2 ? -1.0 : 1.0) * binomial(k, j) * low[idx];
-    }
-    out[i] = scale * s;
-  }
+  std::array<double, kMaxBernsteinDegree + 1> low;
+  bernsteinValues(n - k, u, low.data());
+  for (int i = 0; i <= n; ++i) out[i] = basisDerivative(low.data(), n, i, k);
   return out;
 }
 
@@ -80,18 +77,9 @@ double bernsteinSum(const double* b, int n, double u) {
 
 double bernsteinBasis(int n, int i, double u, int k) {
   if (k > n || i < 0 || i > n) return 0.0;
-  // d^k B_i^n = n!/(n-k)! Σ_j (-1)^{k-j} C(k, j) B_{i-j}^{n-k}: the forward differences of
-  // the unit vector e_i, which have at most k + 1 non-zero entries.
-  std::array<double, kMaxBernsteinDegree + 1> B;
-  bernsteinValues(n - k, u, B.data());
-  double s = 0.0, ckj = 1.0, scale = 1.0;
-  for (int q = 0; q < k; ++q) scale *= n - q;
-  for (int j = 0; j <= k; ++j) {
-    const int idx = i - j;
-    if (idx >= 0 && idx <= n - k) s += ((k - j) % 2 ? -1.0 : 1.0) * ckj * B[idx];
-    ckj = ckj * (k - j) / (j + 1);
-  }
-  return scale * s;
+  std::array<double, kMaxBernsteinDegree + 1> low;
+  bernsteinValues(n - k, u, low.data());
+  return basisDerivative(low.data(), n, i, k);
 }
 
 GaussRule gaussLegendre(int points) {
