@@ -91,11 +91,13 @@ val failure(const char* code, const std::string& message) {
   return r;
 }
 
-// The join certificate as plain data (docs/wasm-api.md); crossings on a 48×48 mesh per patch.
-val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved) {
+// The join certificate as plain data (docs/wasm-api.md); crossings, on a 48×48 mesh per patch,
+// only when asked: they cost several times a re-solve.
+val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool crossings) {
   val report = val::object();
+  report.set("crossingsChecked", crossings);
   try {
-    const SceneReport r = checkScene(scene, solved, 48);
+    const SceneReport r = checkScene(scene, solved, crossings ? 48 : 0);
     report.set("ok", r.ok);
     report.set("sceneSize", r.sceneSize);
     val joins = val::array();
@@ -140,7 +142,7 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved) {
   return report;
 }
 
-val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, bool joins) {
+val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, bool joins, bool crossings) {
   try {
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
@@ -187,7 +189,7 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, b
     r.set("ok", true);
     r.set("title", scene.title);
     r.set("patches", patches);
-    if (joins) r.set("report", reportOf(scene, solved));
+    if (joins) r.set("report", reportOf(scene, solved, crossings));
     return r;
   } catch (const Error& e) {
     return failure(errorCodeName(e.code()), e.what());
@@ -198,16 +200,17 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, b
   }
 }
 
-val solveScenePlain(const std::string& sceneJson, int nu, int nv) { return solveSceneJs(sceneJson, nu, nv, false, false); }
+val solveScenePlain(const std::string& sceneJson, int nu, int nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false); }
 
-// options: {curvature: bool, joins: bool}; anything else (or a missing key) counts as false.
+// options: {curvature: bool, joins: bool, crossings: bool} (crossings only with joins);
+// anything else (or a missing key) counts as false.
 val solveSceneWith(const std::string& sceneJson, int nu, int nv, val options) {
   const auto flag = [&](const char* key) {
     if (options.isUndefined() || options.isNull() || options.typeOf().as<std::string>() != "object") return false;
     const val v = options[key];
     return v.typeOf().as<std::string>() == "boolean" && v.as<bool>();
   };
-  return solveSceneJs(sceneJson, nu, nv, flag("curvature"), flag("joins"));
+  return solveSceneJs(sceneJson, nu, nv, flag("curvature"), flag("joins"), flag("crossings"));
 }
 
 std::string version() { return "0.1.0"; }

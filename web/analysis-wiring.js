@@ -2,13 +2,14 @@
 // zebra and colour-scale settings), the curvature legend, the "Joins" folder and the join
 // highlights in the view. Curvature comes from the module per vertex (solveSceneWith
 // {curvature: true}), asked for only while a curvature map is shown; the join report
-// ({joins: true}) with every solve. An older module without them still draws: the legend
+// ({joins: true}) with every solve, its crossing test ({crossings: true}, several times the
+// cost of a re-solve) only while the Joins folder is open. An older module without them still draws: the legend
 // and the joins folder say what is missing.
 import { buildAnalysisFolder, defaultAnalysisSettings } from './ui/analysis-controls.js';
 import { buildJoinsFolder } from './ui/joins-panel.js';
 import { createCurvatureLegend } from './ui/curvature-legend.js';
 import { curvatureScale } from './state/curvature-scale.js';
-import { normaliseReport, highlightedKeys, joinKey } from './state/join-report.js';
+import { highlightedKeys, joinKey } from './state/join-report.js';
 
 const CURVATURE_KEY = { mean: 'meanCurvature', gauss: 'gaussCurvature' };
 const OLD_MODULE = 'this solver module computes no curvature; rebuild it (scripts/build-wasm)';
@@ -18,7 +19,7 @@ const NO_REPORT = 'this solver module gives no join report; rebuild it (scripts/
 export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve }) {
   const settings = defaultAnalysisSettings();
   const controls = buildAnalysisFolder(panel.gui, settings, onChange);
-  const joins = buildJoinsFolder(panel.gui, onToggle);
+  const joins = buildJoinsFolder(panel.gui, onToggle, onJoinsOpen);
   controls.folder.close();
   joins.folder.close();
   panel.keepAtEnd(controls.folder.domElement, joins.folder.domElement);
@@ -26,7 +27,7 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
 
   let patches = [];
   let report = null;
-  let asked = { curvature: false, joins: false }; // what the last solve asked the module for
+  let asked = { curvature: false, joins: false, crossings: false }; // what the last solve asked the module for
   let overrides = new Map(); // the user's ticks in the joins folder, by join key
   let scale = null; // the curvature map's scale, for the tests
 
@@ -81,6 +82,10 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
     else applyShading();
   }
 
+  function onJoinsOpen() {
+    if (hasAnalysis && !asked.crossings) requestSolve(); // solved() comes back with the crossings
+  }
+
   function onToggle(key, on) {
     overrides.set(key, on);
     applyJoins();
@@ -90,13 +95,13 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
     settings,
     /** What to ask the module for in the next solve. */
     solveOptions() {
-      return hasAnalysis ? { curvature: curvatureMode(), joins: true } : {};
+      return hasAnalysis ? { curvature: curvatureMode(), joins: true, crossings: joins.isOpen() } : {};
     },
     /** After a good solve (the viewer already has the meshes). */
     solved(result, options) {
       patches = result.patches;
-      asked = { curvature: Boolean(options.curvature), joins: Boolean(options.joins) };
-      report = normaliseReport(result.report);
+      asked = { curvature: Boolean(options.curvature), joins: Boolean(options.joins), crossings: Boolean(options.crossings) };
+      report = result.report ?? null; // checked by the solver wrapper (state/join-report.js)
       applyShading();
       applyJoins();
     },

@@ -251,9 +251,14 @@ for (const size of SIZES) {
     });
 
     it('lists the joins with their measures and highlights a ticked join on the surface', async () => {
+      assert.equal((await state()).report.crossingsChecked, false, 'crossings are checked only while the Joins folder is open');
       const folder = await openFolder('joins');
+      // Opening the folder re-solves with the crossing test.
+      await page.waitForFunction(() => window.__pdesurf.analysis().report?.crossingsChecked === true);
       const s = await state();
       assert.ok(s.report, 'no join report from the module');
+      assert.deepEqual(s.report.crossings, [], 'Fig. 4a crosses nothing');
+      assert.match(await folder.locator('.joins-summary').textContent(), /; 0 crossings$/);
       const items = folder.locator('[data-join]');
       assert.equal(await items.count(), s.report.joins.length);
       assert.ok(s.report.joins.length >= 2, 'Fig. 4a has two joins (cylinder and plane)');

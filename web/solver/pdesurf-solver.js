@@ -1,6 +1,7 @@
 // Wrapper around the emscripten module (docs/wasm-api.md). The only place that
 // touches the module: it turns the module's result-or-error value into data or a
 // thrown PdesurfError, so callers never see an aborted module or a bare pointer.
+import { normaliseReport } from '../state/join-report.js';
 
 /** A solver failure with a machine-readable code (ParseError, InvalidField, ...). */
 export class PdesurfError extends Error {
@@ -51,7 +52,7 @@ export async function loadSolver(opts = {}) {
   };
 }
 
-function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false } = {}) {
+function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false, crossings = false } = {}) {
   const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
   const analysis = Boolean(curvature) || Boolean(joins);
   if (analysis && typeof Module.solveSceneWith !== 'function') {
@@ -60,7 +61,7 @@ function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins =
   let res;
   try {
     res = analysis
-      ? Module.solveSceneWith(text, nu, nv, { curvature: Boolean(curvature), joins: Boolean(joins) })
+      ? Module.solveSceneWith(text, nu, nv, { curvature: Boolean(curvature), joins: Boolean(joins), crossings: Boolean(crossings) })
       : Module.solveScene(text, nu, nv);
   } catch (err) {
     // Should not happen (the binding catches), but never let a raw throw escape.
@@ -73,25 +74,10 @@ function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins =
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown solver error'));
   }
   const out = { patches: Array.from(res.patches || [], normalisePatch) };
-  if (joins) out.report = normaliseReport(res.report);
-  return out;
-}
-
-// The join certificate (docs/analysis.md): plain numbers, booleans and strings only.
-function normaliseReport(r) {
-  if (!r || typeof r !== 'object') throw new PdesurfError('Internal', 'the solver returned no join report');
-  const joins = Array.from(r.joins || [], (j) => ({
-    patch: String(j.patch), end: String(j.end), surface: String(j.surface), edge: String(j.edge),
-    level: String(j.level), g0: Number(j.g0), g1_deg: Number(j.g1_deg),
-    g2_rel: j.g2_rel === null || j.g2_rel === undefined ? null : Number(j.g2_rel),
-    fold: Boolean(j.fold), degenerate: Number(j.degenerate), worstV: Number(j.worstV), ok: Boolean(j.ok),
-  }));
-  const crossings = Array.from(r.crossings || [], (c) => ({
-    patch: String(c.patch), other: String(c.other),
-    u: Array.from(c.u, Number), v: Array.from(c.v, Number), triangles: Number(c.triangles),
-  }));
-  const out = { ok: Boolean(r.ok), sceneSize: Number(r.sceneSize), joins, crossings };
-  if (r.error) out.error = { code: String(r.error.code), message: String(r.error.message) };
+  if (joins) {
+    out.report = normaliseReport(res.report);
+    if (!out.report) throw new PdesurfError('Internal', 'the solver returned no join report');
+  }
   return out;
 }
 

@@ -36,8 +36,12 @@ export function normaliseReport(raw) {
     other: String(c.other),
     u: Array.from(c.u || [], Number),
     v: Array.from(c.v || [], Number),
+    triangles: Number(c.triangles) || 0,
   }));
-  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings };
+  // Crossings are checked only when asked ({crossings: true}); a module that predates the
+  // option always checked them.
+  const crossingsChecked = raw.crossingsChecked !== false;
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings, crossingsChecked };
   // A declared join the module cannot certify: the scene still draws, the report says why.
   if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
   return out;

@@ -14,10 +14,18 @@ function el(tag, className, text) {
   return node;
 }
 
-/** onToggle(key, on) when a checkbox changes. Returns { folder, show(report, highlighted), message(text) }. */
-export function buildJoinsFolder(gui, onToggle) {
+/**
+ * onToggle(key, on) when a checkbox changes; onOpen() when the user opens the folder.
+ * Returns { folder, isOpen(), show(report, highlighted), message(text) }.
+ */
+export function buildJoinsFolder(gui, onToggle, onOpen) {
   const folder = gui.addFolder('Joins');
   folder.domElement.dataset.folder = 'joins';
+  const isOpen = () => folder.$title.getAttribute('aria-expanded') === 'true';
+  // lil-gui toggles on a title click (Enter and Space click too); its own listener runs first.
+  folder.$title.addEventListener('click', () => {
+    if (isOpen()) onOpen();
+  });
   const body = el('div', 'joins');
   folder.$children.append(body);
 
@@ -60,13 +68,17 @@ export function buildJoinsFolder(gui, onToggle) {
 
   return {
     folder,
+    isOpen,
     /** report: normaliseReport()'s result; highlighted: keys that are ticked. */
     show(report, highlighted) {
       clear();
       const ticked = new Set(highlighted);
       const fails = report.joins.filter((j) => !j.ok).length;
       const n = report.joins.length;
-      const summary = `${n} ${n === 1 ? 'join' : 'joins'}, ${fails} failing; ${report.crossings.length} ${report.crossings.length === 1 ? 'crossing' : 'crossings'}`;
+      const crossings = report.crossingsChecked
+        ? `${report.crossings.length} ${report.crossings.length === 1 ? 'crossing' : 'crossings'}`
+        : 'crossings not checked yet';
+      const summary = `${n} ${n === 1 ? 'join' : 'joins'}, ${fails} failing; ${crossings}`;
       body.append(el('div', `joins-summary ${report.ok ? 'ok' : 'fail'}`, summary));
       if (n === 0) body.append(el('div', 'joins-message', 'no joins in this scene'));
       const list = el('ul', 'joins-list');
@@ -76,7 +88,8 @@ export function buildJoinsFolder(gui, onToggle) {
         const cl = el('ul', 'joins-crossings');
         for (const c of report.crossings) cl.append(el('li', 'joins-crossing', crossingText(c)));
         body.append(cl);
-      } else body.append(el('div', 'joins-message', 'no crossings found'));
+      } else if (report.crossingsChecked) body.append(el('div', 'joins-message', 'no crossings found'));
+      else body.append(el('div', 'joins-message', 'checking crossings…'));
     },
     /** No report to show (an older module, or the last solve failed): say why. */
     message(text) {
