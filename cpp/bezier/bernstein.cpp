@@ -9,11 +9,9 @@
 
 namespace pdesurf {
 
-namespace {
-
 // d^k B_i^n = n!/(n-k)! Σ_j (-1)^{k-j} C(k, j) B_{i-j}^{n-k}: the forward differences of the
 // unit vector e_i, which have at most k + 1 non-zero entries. low[] = B^{n-k}(u).
-double basisDerivative(const double* low, int n, int i, int k) {
+double bernsteinBasisFrom(const double* low, int n, int i, int k) {
   double s = 0.0, ckj = 1.0, scale = 1.0;
   for (int q = 0; q < k; ++q) scale *= n - q;
   for (int j = 0; j <= k; ++j) {
@@ -24,14 +22,22 @@ double basisDerivative(const double* low, int n, int i, int k) {
   return scale * s;
 }
 
-}  // namespace
+const double* BernsteinOnGrid::values(int n) {
+  if (static_cast<int>(byDegree_.size()) <= n) byDegree_.resize(n + 1);
+  std::vector<double>& v = byDegree_[n];
+  if (v.empty()) {
+    v.resize(static_cast<size_t>(count_) * (n + 1));
+    for (int i = 0; i < count_; ++i) bernsteinValues(n, t_[i], v.data() + static_cast<size_t>(i) * (n + 1));
+  }
+  return v.data();
+}
 
 std::vector<double> bernstein(int n, double u, int k) {
   std::vector<double> out(n + 1, 0.0);
   if (k > n) return out;
   std::array<double, kMaxBernsteinDegree + 1> low;
   bernsteinValues(n - k, u, low.data());
-  for (int i = 0; i <= n; ++i) out[i] = basisDerivative(low.data(), n, i, k);
+  for (int i = 0; i <= n; ++i) out[i] = bernsteinBasisFrom(low.data(), n, i, k);
   return out;
 }
 
@@ -79,7 +85,7 @@ double bernsteinBasis(int n, int i, double u, int k) {
   if (k > n || i < 0 || i > n) return 0.0;
   std::array<double, kMaxBernsteinDegree + 1> low;
   bernsteinValues(n - k, u, low.data());
-  return basisDerivative(low.data(), n, i, k);
+  return bernsteinBasisFrom(low.data(), n, i, k);
 }
 
 GaussRule gaussLegendre(int points) {

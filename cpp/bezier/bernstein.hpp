@@ -22,6 +22,23 @@ std::vector<double> bernsteinDerivativeCoefs(const std::vector<double>& b, int k
 double bernsteinSum(const double* b, int n, double u);
 // d^k/du^k B_i^n(u) for one i.
 double bernsteinBasis(int n, int i, double u, int k = 0);
+// The same from low[] = B^{n-k}(u) (forward differences of e_i: at most k + 1 terms).
+double bernsteinBasisFrom(const double* low, int n, int i, int k);
+
+// B^n at every point of a grid, per degree, computed on first use: the terms of a Bézier
+// patch share them, so a tabulation evaluates the basis once per point, not once per term.
+class BernsteinOnGrid {
+ public:
+  BernsteinOnGrid(const double* t, int count) : t_(t), count_(count) {}
+  int count() const { return count_; }
+  // count × (n + 1) values, row i = B_0^n(t_i) .. B_n^n(t_i).
+  const double* values(int n);
+
+ private:
+  const double* t_;
+  int count_;
+  std::vector<std::vector<double>> byDegree_;
+};
 
 struct GaussRule {
   std::vector<double> x, w;  // nodes in [0, 1], weights summing to 1

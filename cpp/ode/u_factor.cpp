@@ -55,18 +55,20 @@ double UFactor::eval(double u, int m) const {
   return sum;
 }
 
-void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out) const {
+void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis) const {
   std::fill(out, out + static_cast<size_t>(count) * (maxDerivative + 1), 0.0);
   if (!bernstein.empty()) {
     // Derivative coefficients once; per point the basis values of each lower degree.
     std::vector<std::vector<double>> d(maxDerivative + 1);
     for (int m = 0; m <= maxDerivative; ++m) d[m] = bernsteinDerivativeCoefs(bernstein, m);
-    std::array<double, kMaxBernsteinDegree + 1> B;
+    std::array<double, kMaxBernsteinDegree + 1> own;
     for (int m = 0; m <= maxDerivative; ++m) {
       if (d[m].empty()) continue;
       const int n = static_cast<int>(d[m].size()) - 1;
+      const double* table = basis ? basis->values(n) : nullptr;
       for (int i = 0; i < count; ++i) {
-        bernsteinValues(n, u[i], B.data());
+        const double* B = table ? table + static_cast<size_t>(i) * (n + 1) : own.data();
+        if (!table) bernsteinValues(n, u[i], own.data());
         double s = 0.0;
         for (int k = 0; k <= n; ++k) s += d[m][k] * B[k];
         out[static_cast<size_t>(m) * count + i] = s;

@@ -10,6 +10,7 @@
 
 namespace pdesurf {
 
+class BernsteinOnGrid;
 using cplx = std::complex<double>;
 
 struct ExpPoly {
@@ -34,8 +35,9 @@ class UFactor {
   // The m-th derivative at u.
   double eval(double u, int m = 0) const;
   // out[k * count + i] = G^{(k)}(u[i]) for k = 0..maxDerivative. Derivative polynomials are
-  // formed once per piece, the exponential once per point and piece.
-  void tabulate(const double* u, int count, int maxDerivative, double* out) const;
+  // formed once per piece, the exponential once per point and piece. A Bernstein-form factor
+  // takes its basis values from `basis` (the same points) when given, shared with other terms.
+  void tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis = nullptr) const;
 };
 
 }  // namespace pdesurf

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
 
 namespace pdesurf {
@@ -26,6 +27,13 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
   for (int i = 0; i <= nu; ++i) t.u[i] = i == nu ? s.u1 : s.u0 + (s.u1 - s.u0) * i / nu;
   for (int j = 0; j <= nv; ++j) t.v[j] = j == nv ? s.v1 : s.v0 + (s.v1 - s.v0) * j / nv;
   static const char* axis[3] = {"x", "y", "z"};
+  // Bézier patches: every term shares its Bernstein basis on each grid line.
+  BernsteinOnGrid uBasis(t.u.data(), nu + 1), vBasis(t.v.data(), nv + 1);
+  auto vFactor = [&](const VFunction& g, int j, int d) {
+    if (g.family != Family::Bernstein) return g.eval(t.v[j], d);
+    if (d > g.degree) return 0.0;
+    return bernsteinBasisFrom(vBasis.values(g.degree - d) + static_cast<size_t>(j) * (g.degree - d + 1), g.degree, g.n, d);
+  };
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[c];
     const int T = static_cast<int>(terms.size());
@@ -34,12 +42,12 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
     t.vTab[c].assign(static_cast<size_t>(nv + 1) * D * T, 0.0);
     for (int k = 0; k < T; ++k) {
       double* uk = t.uTab[c].data() + static_cast<size_t>(D * k) * (nu + 1);
-      terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk);
+      terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk, &uBasis);
       bool finite = true;
       for (int i = 0; i < D * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
       for (int j = 0; j <= nv; ++j)
         for (int d = 0; d < D; ++d) {
-          const double g = terms[k].g.eval(t.v[j], d);
+          const double g = vFactor(terms[k].g, j, d);
           t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = g;
           finite = finite && std::isfinite(g);
         }
