@@ -5,7 +5,7 @@
 
 #include "common/errors.hpp"
 #include "surface/combine_rows.hpp"
-#include "surface/curvature.hpp"
+#include "surface/row_frame.hpp"
 
 namespace pdesurf {
 
@@ -98,29 +98,18 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
   m.degenerateVertices = 0;
   std::vector<size_t> poles;
   const size_t w = static_cast<size_t>(nu) + 1;
+  RowFrame frame;
   combineRows(t, [&](int j, const GridRow& row) {
-    const double *x = row.at(0, 0), *y = row.at(0, 1), *z = row.at(0, 2);
-    const double *xu = row.at(1, 0), *yu = row.at(1, 1), *zu = row.at(1, 2);
-    const double *xv = row.at(2, 0), *yv = row.at(2, 1), *zv = row.at(2, 2);
-    float* p = pos + 3 * j * w;
-    float* q = nrm + 3 * j * w;
-    bool pole = false;
-    for (size_t i = 0; i < w; ++i) {
-      const double nx = yu[i] * zv[i] - zu[i] * yv[i];
-      const double ny = zu[i] * xv[i] - xu[i] * zv[i];
-      const double nz = xu[i] * yv[i] - yu[i] * xv[i];
-      const double len2 = nx * nx + ny * ny + nz * nz;
-      const double scale2 = (xu[i] * xu[i] + yu[i] * yu[i] + zu[i] * zu[i]) * (xv[i] * xv[i] + yv[i] * yv[i] + zv[i] * zv[i]);
-      const bool regular = len2 > 1e-24 * scale2 && len2 > 0;
-      pole |= !regular;
-      const double inv = regular ? 1.0 / std::sqrt(len2) : 0.0;
-      p[3 * i] = static_cast<float>(x[i]), p[3 * i + 1] = static_cast<float>(y[i]), p[3 * i + 2] = static_cast<float>(z[i]);
-      q[3 * i] = static_cast<float>(nx * inv), q[3 * i + 1] = static_cast<float>(ny * inv), q[3 * i + 2] = static_cast<float>(nz * inv);
-    }
-    if (curvature) m.degenerateVertices += curvatureRow(row, m.meanCurvature.data() + j * w, m.gaussCurvature.data() + j * w);
-    if (pole)  // rare: find the pole vertices of this row again
+    const size_t first = static_cast<size_t>(j) * w;
+    float* q = nrm + 3 * first;
+    if (curvature)
+      frameRow(row, pos + 3 * first, q, frame, m.meanCurvature.data() + first, m.gaussCurvature.data() + first);
+    else
+      frameRow(row, pos + 3 * first, q, frame);
+    m.degenerateVertices += frame.degenerate;
+    if (frame.poles > 0)  // rare: find the pole vertices of this row again
       for (size_t i = 0; i < w; ++i)
-        if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(j * w + i);
+        if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(first + i);
   });
   repairPoleNormals(poles, nu, nv, m);
 }

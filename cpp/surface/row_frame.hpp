@@ -1,0 +1,19 @@
+// The per-vertex work of tessellation for one grid row, in one pass over its
+// structure-of-arrays quantities: float positions, unit normals and, with second derivatives,
+// mean and Gaussian curvature (formulas in surface/curvature.hpp).
+#pragma once
+#include "surface/combine_rows.hpp"
+
+namespace pdesurf {
+
+struct RowFrame {
+  int poles = 0;       // points where |X_u × X_v|² ≤ 1e-24 E G: normal (0, 0, 0)
+  int degenerate = 0;  // points where |X_u × X_v|² ≤ 1e-24 max(E, G)²: no curvature (H = K = 0)
+};
+
+// Writes P[3i..3i+2] = X and N[3i..3i+2] = unit normal for the row's points i, and counts in
+// f. With H and K (row.quantities == 6 required), also H[i], K[i], clamped to what a float
+// holds.
+void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H = nullptr, float* K = nullptr);
+
+}  // namespace pdesurf
