@@ -27,8 +27,10 @@ nlohmann::json toJson(const SceneReport& r) {
 
 int runCheck(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
+  const int grid = o.gridGiven ? std::max(o.nu, o.nv) : 64;
+  checkSceneGrid(scene, grid, grid);
   const auto solved = solveScene(scene);
-  const SceneReport r = checkScene(scene, solved, o.gridGiven ? std::max(o.nu, o.nv) : 64);
+  const SceneReport r = checkScene(scene, solved, grid);
   if (o.json) {
     out << toJson(r).dump(2) << "\n";
     return r.ok ? 0 : 1;

@@ -7,11 +7,13 @@
 #include "common/errors.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
+#include "surface/tabulation.hpp"
 
 namespace pdesurf::cli {
 
 int runSample(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
+  checkGrid(o.nu, o.nv);
   const Patch* patch = o.patch.empty() ? scene.firstSolved() : scene.find(o.patch);
   if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE or Bezier patch" : "no patch named '" + o.patch + "'");
   Method method;
@@ -45,12 +47,23 @@ int runSample(const Options& o, std::ostream& out) {
   return 0;
 }
 
+namespace {
+// OBJ is line-based: a control character in a name would start a line of its own. The scene
+// parser refuses them already; this keeps the writer safe on its own.
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  return s;
+}
+}  // namespace
+
 int runExport(const Options& o) {
   const Scene scene = parseScene(readFile(o.scenePath));
+  checkSceneGrid(scene, o.nu, o.nv);
   const auto solved = solveScene(scene);
   std::ofstream f(o.output, std::ios::binary);
   if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
-  f << "# pdesurf export: " << scene.title << "\n";
+  f << "# pdesurf export: " << oneLine(scene.title) << "\n";
   size_t base = 1;  // OBJ indices are 1-based and global across objects
   char line[160];
   for (const SolvedPatch& sp : solved) {
@@ -60,7 +73,7 @@ int runExport(const Options& o) {
     } catch (const Error& e) {
       throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
     }
-    f << "o " << sp.patch->name << "\n";
+    f << "o " << oneLine(sp.patch->name) << "\n";
     for (size_t k = 0; k < m.vertexCount(); ++k) {
       std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", m.positions[3 * k], m.positions[3 * k + 1], m.positions[3 * k + 2]);
       f << line;

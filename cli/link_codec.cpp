@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace pdesurf::cli {
@@ -17,6 +18,29 @@ int sextet(char c) {
   if (c == '_') return 63;
   return -1;
 }
+// Some tools percent-encode what they copy; base64url itself never contains '%'. Strict: a
+// '%' not followed by two hex digits is damage (as for the page's decodeURIComponent).
+std::string percentDecode(const std::string& s) {
+  const auto hex = [](char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] != '%') {
+      out += s[i];
+      continue;
+    }
+    const int hi = i + 2 < s.size() ? hex(s[i + 1]) : -1, lo = i + 2 < s.size() ? hex(s[i + 2]) : -1;
+    if (hi < 0 || lo < 0) throw std::runtime_error("the link is damaged: bad percent-encoding");
+    out += static_cast<char>(hi * 16 + lo);
+    i += 2;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string base64urlEncode(const std::string& bytes) {
@@ -95,7 +119,10 @@ std::string inflateRaw(const std::string& bytes, size_t maxBytes) {
       throw std::runtime_error("the link inflates to more than " + std::to_string(maxBytes) + " bytes");
     }
   }
+  const uInt trailing = z.avail_in;
   inflateEnd(&z);
+  // A second stream or junk after the first would make the link mean two things.
+  if (trailing != 0) throw std::runtime_error("the link is damaged: " + std::to_string(trailing) + " bytes after the end of its compressed data");
   return out;
 }
 
@@ -104,17 +131,29 @@ std::string encodeLink(const std::string& stateJson) {
 }
 
 std::string decodeLink(const std::string& link) {
+  if (link.size() > limits::kLinkChars) throw std::runtime_error("the link is too long (" + std::to_string(link.size()) + " characters)");
   std::string s = link;
   const size_t hash = s.find('#');
   if (hash != std::string::npos) s = s.substr(hash + 1);
-  if (s.rfind("s=", 0) != 0) throw std::runtime_error("not a pdesurf link: expected '#s=<version>.<data>'");
-  s = s.substr(2);
-  const size_t dot = s.find('.');
-  if (dot == std::string::npos) throw std::runtime_error("not a pdesurf link: no version");
-  const std::string version = s.substr(0, dot);
+  std::string compact;  // chats and mail wrap long links: whitespace is never part of one
+  for (char c : s)
+    if (c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') compact += c;
+  std::string field;
+  bool found = false;
+  for (size_t start = 0; start <= compact.size() && !found;) {
+    const size_t end = std::min(compact.find('&', start), compact.size());
+    if (compact.compare(start, 2, "s=") == 0) field = compact.substr(start + 2, end - start - 2), found = true;
+    start = end + 1;
+  }
+  if (!found) throw std::runtime_error("not a pdesurf link: it holds no page state (\"s=...\")");
+  if (field.find('%') != std::string::npos) field = percentDecode(field);
+  const size_t dot = field.find('.');
+  if (dot == std::string::npos) throw std::runtime_error("the link is damaged: expected \"s=<version>.<data>\"");
+  const std::string version = field.substr(0, dot);
   // One decoder per link version, kept forever. Version 1: deflate-raw JSON.
-  if (version == "1") return inflateRaw(base64urlDecode(s.substr(dot + 1)), kMaxInflatedBytes);
-  throw std::runtime_error("unknown link version '" + version.substr(0, 16) + "' (this build reads version 1)");
+  if (version != "1") throw std::runtime_error("unknown link version '" + version.substr(0, 16) + "' (this build reads version 1)");
+  if (dot + 1 == field.size()) throw std::runtime_error("the link is damaged: it carries no data");
+  return inflateRaw(base64urlDecode(field.substr(dot + 1)), kMaxInflatedBytes);
 }
 
 }  // namespace pdesurf::cli

@@ -5,6 +5,8 @@
 
 #include "cli.hpp"
 #include "link_codec.hpp"
+#include "common/errors.hpp"
+#include "scene/json_read.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf::cli {
@@ -13,7 +15,7 @@ int runEncodeLink(const Options& o, std::ostream& out) {
   const std::string text = readFile(o.scenePath);
   parseScene(text);  // a link to a scene that does not load helps nobody
   nlohmann::json state;
-  state["scene"] = nlohmann::json::parse(text);
+  state["scene"] = readJson(text);
   if (o.gridGiven) state["grid"] = {{"nu", o.nu}, {"nv", o.nv}};
   out << encodeLink(state.dump()) << "\n";
   return 0;
@@ -23,9 +25,10 @@ int runDecodeLink(const Options& o, std::ostream& out) {
   const std::string json = decodeLink(o.scenePath);
   nlohmann::json state;
   try {
-    state = nlohmann::json::parse(json);
-  } catch (const nlohmann::json::exception&) {
-    throw std::runtime_error("the link's content is not JSON");
+    state = readJson(json);  // limits first: nothing nested deeper than 32 is built or dumped
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::ParseError) throw std::runtime_error(std::string("the link's content is not JSON: ") + e.what());
+    throw std::runtime_error(std::string("the link's content is refused: ") + errorCodeName(e.code()) + ": " + e.what());
   }
   if (!state.is_object() || !state.contains("scene") || !state["scene"].is_object())
     throw std::runtime_error("the link holds no scene");

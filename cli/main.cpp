@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
     if (o.command == "decode-link") return runDecodeLink(o, std::cout);
     return runExport(o);
   } catch (const pdesurf::Error& e) {
-    std::cerr << "pdesurf: " << o.scenePath << ": " << pdesurf::errorCodeName(e.code()) << ": " << e.what() << "\n";
+    // A link is not a file name: naming it would print up to 2 MiB of base64.
+    const std::string source = o.command == "decode-link" ? std::string("the link") : o.scenePath;
+    std::cerr << "pdesurf: " << source << ": " << pdesurf::errorCodeName(e.code()) << ": " << e.what() << "\n";
   } catch (const std::exception& e) {
     std::cerr << "pdesurf: " << e.what() << "\n";
   }

@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <new>
 
 #include "analysis/join_certificate.hpp"
@@ -142,10 +143,23 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
   return report;
 }
 
-val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, bool joins, bool crossings) {
+// A grid size from JS: a number that is an integer (1.5 or "64" are refused, not truncated or
+// converted).
+int gridArg(const val& v, const char* name) {
+  const std::string type = v.typeOf().as<std::string>();
+  if (type != "number") throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not a " + type);
+  const double x = v.as<double>();
+  if (!(x == std::floor(x)) || std::fabs(x) > 1e9)
+    throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not " + std::to_string(x));
+  return static_cast<int>(x);  // the range: checkGrid
+}
+
+val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvArg, bool curvature, bool joins, bool crossings) {
   try {
+    const int nu = gridArg(nuArg, "nu"), nv = gridArg(nvArg, "nv");
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
+    checkSceneGrid(scene, nu, nv);
     // Kept between calls: a slider that moves a trimline reuses every ODE basis, a drag of a
     // Bézier control point its factorisation.
     static SolveCache cache;
@@ -190,6 +204,9 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, b
     r.set("title", scene.title);
     r.set("patches", patches);
     if (joins) r.set("report", reportOf(scene, solved, crossings));
+    // The wasm heap never shrinks; at least hand large meshes back to the allocator, so a
+    // one-off big grid does not stay held by the cache (the next solve reuses the memory).
+    if (static_cast<size_t>(nu + 1) * (nv + 1) > size_t{513} * 513) std::vector<Mesh>().swap(meshes);
     return r;
   } catch (const Error& e) {
     return failure(errorCodeName(e.code()), e.what());
@@ -200,11 +217,11 @@ val solveSceneJs(const std::string& sceneJson, int nu, int nv, bool curvature, b
   }
 }
 
-val solveScenePlain(const std::string& sceneJson, int nu, int nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false); }
+val solveScenePlain(const std::string& sceneJson, val nu, val nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false); }
 
 // options: {curvature: bool, joins: bool, crossings: bool} (crossings only with joins);
 // anything else (or a missing key) counts as false.
-val solveSceneWith(const std::string& sceneJson, int nu, int nv, val options) {
+val solveSceneWith(const std::string& sceneJson, val nu, val nv, val options) {
   const auto flag = [&](const char* key) {
     if (options.isUndefined() || options.isNull() || options.typeOf().as<std::string>() != "object") return false;
     const val v = options[key];

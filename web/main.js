@@ -208,11 +208,13 @@ async function start() {
     const edited = !opening && !quiet;
     opening = false;
     quiet = false;
-    const text = state.text();
     const options = analysis.solveOptions();
     const t0 = performance.now();
     let result;
+    let text;
     try {
+      // Inside the try: writing the scene as text can throw too (a cyclic or too deep object).
+      text = state.text();
       result = solver.solve(text, { ...state.grid, ...options });
     } catch (err) {
       if (linkPending) {

@@ -10,6 +10,7 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::NonFinite: return "NonFinite";
     case ErrorCode::DegenerateOperator: return "DegenerateOperator";
     case ErrorCode::GridSize: return "GridSize";
+    case ErrorCode::TooLarge: return "TooLarge";
     case ErrorCode::Singular: return "Singular";
     case ErrorCode::Internal: return "Internal";
   }

@@ -13,6 +13,7 @@ enum class ErrorCode {
   NonFinite,           // a number or a sampled value is NaN or infinite
   DegenerateOperator,  // the PDE loses its order in u (leading coefficient zero)
   GridSize,            // grid outside 1..2048 per direction
+  TooLarge,            // input or work over a limit of common/limits.hpp (docs/limits.md)
   Singular,            // the boundary-value problem has no unique solution (resonance)
   Internal,            // a bug: please report
 };

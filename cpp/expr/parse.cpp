@@ -90,11 +90,26 @@ class Parser {
       return v;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
-      const char* begin = s_.c_str() + pos_;
+      // Decimal only, scanned here: strtod alone would also take 0x10 and 0x1p3.
+      const auto digit = [&](size_t k) { return k < s_.size() && std::isdigit(static_cast<unsigned char>(s_[k])); };
+      size_t k = pos_;
+      while (digit(k)) ++k;
+      if (k < s_.size() && s_[k] == '.') ++k;
+      while (digit(k)) ++k;
+      if (k < s_.size() && (s_[k] == 'e' || s_[k] == 'E')) {
+        const size_t e = k + (k + 1 < s_.size() && (s_[k + 1] == '+' || s_[k + 1] == '-') ? 2 : 1);
+        if (digit(e)) {
+          k = e;
+          while (digit(k)) ++k;
+        }
+      }
+      if (k < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[k])) || s_[k] == '_' || s_[k] == '.'))
+        fail("bad number: numbers are decimal, such as 16, 0.5 or 1.5e-3");
+      const std::string text = s_.substr(pos_, k - pos_);
       char* end = nullptr;
-      const double v = std::strtod(begin, &end);
-      if (end == begin) fail("bad number");
-      pos_ += static_cast<size_t>(end - begin);
+      const double v = std::strtod(text.c_str(), &end);
+      if (text == "." || end != text.c_str() + text.size()) fail("bad number");
+      pos_ = k;
       return constant(v);
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {

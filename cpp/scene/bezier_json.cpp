@@ -2,6 +2,7 @@
 // normal field, continuous (control vectors of its own degree) or discrete (a sample grid of
 // normals, given as vectors or as expressions in u and v, with optional per-sample weights).
 #include "expr/parse.hpp"
+#include "common/limits.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
 
@@ -12,12 +13,8 @@ using namespace scene_json;
 namespace {
 
 std::array<int, 2> pair(const json& j, const std::string& path, int lo, int hi) {
-  if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
-    fail(ErrorCode::InvalidField, path, "expected [integer, integer]");
-  const int a = j[0].get<int>(), b = j[1].get<int>();
-  if (a < lo || b < lo || a > hi || b > hi)
-    fail(ErrorCode::InvalidField, path, "expected values in " + std::to_string(lo) + ".." + std::to_string(hi));
-  return {a, b};
+  if (!j.is_array() || j.size() != 2) fail(ErrorCode::InvalidField, path, "expected [integer, integer]");
+  return {integerField(j[0], path + "[0]", lo, hi), integerField(j[1], path + "[1]", lo, hi)};
 }
 
 std::vector<Eigen::Vector3d> points(const json& j, const std::string& path, const Resolver& r, size_t count) {
@@ -66,7 +63,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
   if (energy == "membrane") b.energy = BezierEnergy::Membrane;
   else if (energy == "thin-plate") b.energy = BezierEnergy::ThinPlate;
   else fail(ErrorCode::InvalidField, path + ".energy", "expected \"membrane\" or \"thin-plate\"");
-  const auto deg = pair(require(j, "degree", path), path + ".degree", 1, 16);
+  const auto deg = pair(require(j, "degree", path), path + ".degree", 1, limits::kBezierDegree);
   b.n = deg[0], b.m = deg[1];
   b.initial = points(require(j, "control_net", path), path + ".control_net", r, static_cast<size_t>(b.n + 1) * (b.m + 1));
   b.lambda = j.contains("lambda") ? r.number(j["lambda"], path + ".lambda") : 0.0;
@@ -86,6 +83,11 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
     const auto g = pair(require(nj, "grid", np), np + ".grid", 1, 256);
     f.np = g[0], f.mp = g[1];
     const size_t count = static_cast<size_t>(f.np + 1) * (f.mp + 1);
+    const size_t K = static_cast<size_t>(b.n + 1) * (b.m + 1);
+    if (count * K * K > limits::kBezierAssembly)
+      fail(ErrorCode::TooLarge, np + ".grid", std::to_string(count) + " samples for " + std::to_string(K) + " control points are " +
+                                               std::to_string(count * K * K) + " units of assembly work, over the limit " +
+                                               std::to_string(limits::kBezierAssembly) + " (use a coarser grid or a lower degree)");
     if (nj.contains("vectors") == nj.contains("field")) fail(ErrorCode::InvalidField, np, "give either \"vectors\" or \"field\"");
     if (nj.contains("vectors")) {
       f.vectors = points(nj["vectors"], np + ".vectors", r, count);

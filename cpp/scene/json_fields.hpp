@@ -39,11 +39,33 @@ inline const json& require(const json& obj, const char* key, const std::string& 
   return *it;
 }
 
-inline std::string stringField(const json& j, const std::string& path, size_t maxLen = 200) {
+// One line of text: control characters are refused (a newline in a name would start a new
+// line in an OBJ file); multiLine allows newlines and tabs (descriptions, notes).
+inline std::string stringField(const json& j, const std::string& path, size_t maxLen = 200, bool multiLine = false) {
   if (!j.is_string()) fail(ErrorCode::InvalidField, path, "expected a string");
   const std::string s = j.get<std::string>();
   if (s.size() > maxLen) fail(ErrorCode::InvalidField, path, "longer than " + std::to_string(maxLen) + " characters");
+  for (unsigned char c : s)
+    if ((c < 0x20 || c == 0x7f) && !(multiLine && (c == '\n' || c == '\t')))
+      fail(ErrorCode::InvalidField, path, multiLine ? "control characters other than newline and tab" : "a control character (names and titles are one line)");
   return s;
+}
+
+// An integer in lo..hi, read without wrapping (get<int> would read 4294967297 as 1).
+inline int integerField(const json& j, const std::string& path, long long lo, long long hi) {
+  bool ok = false;
+  long long v = 0;
+  if (j.is_number_unsigned()) {
+    const auto u = j.get<unsigned long long>();
+    ok = u <= static_cast<unsigned long long>(hi);
+    v = ok ? static_cast<long long>(u) : 0;
+  } else if (j.is_number_integer()) {
+    v = j.get<long long>();
+    ok = true;
+  }
+  if (!ok || v < lo || v > hi)
+    fail(ErrorCode::InvalidField, path, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+  return static_cast<int>(v);
 }
 
 class Resolver {
@@ -111,10 +133,7 @@ class Resolver {
     if (term.g.isPoly()) {
       if (t.contains("w")) fail(ErrorCode::InvalidField, p + ".w", "a polynomial term has a power n, not a frequency w");
       if (t.contains("n")) {
-        const json& n = t["n"];
-        if (!n.is_number_integer() || n.get<long long>() < 0 || n.get<long long>() > kMaxPower)
-          fail(ErrorCode::InvalidField, p + ".n", "expected an integer power 0.." + std::to_string(kMaxPower));
-        term.g.n = n.get<int>();
+        term.g.n = integerField(t["n"], p + ".n", 0, kMaxPower);
       }
     } else {
       if (t.contains("n")) fail(ErrorCode::InvalidField, p + ".n", "only poly terms have a power n");

@@ -88,9 +88,8 @@ struct SolvedPatch {
   double energy = 0.0, normalMisfit = 0.0;
 };
 
-constexpr size_t kMaxSceneBytes = 1 << 20;
-
-// Throws Error(ParseError | InvalidField | UnknownName | NonFinite) with a field path such as
+// Throws Error(ParseError | InvalidField | UnknownName | NonFinite | TooLarge) with a field
+// path such as
 // "patches[0].boundary.x.u0[1][0].coef: col 3: unknown parameter 'r9'".
 Scene parseScene(const std::string& jsonText);
 
@@ -104,5 +103,10 @@ struct SolveCache {
 // Throws, message prefixed with the patch name. `method` overrides the patch's own.
 SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr, SolveCache* cache = nullptr);
 std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache = nullptr);
+
+// Before drawing every patch of `scene` on an nu×nv grid: throws Error(GridSize) outside
+// 1..limits::kGrid per direction and Error(TooLarge) when all patches together would exceed
+// limits::kSceneVertices. Call it before solving, so refused work costs nothing.
+void checkSceneGrid(const Scene& scene, int nu, int nv);
 
 }  // namespace pdesurf

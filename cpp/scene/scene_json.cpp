@@ -5,7 +5,9 @@
 
 #include "bezier/bezier_solver.hpp"
 #include "scene/expression_fields.hpp"
+#include "common/limits.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/json_read.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
@@ -18,28 +20,6 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
 namespace {
-
-constexpr int kMaxJsonDepth = 32;
-constexpr int kMaxPatches = 64;
-
-// nlohmann's parser recurses per nesting level; bound the depth before it runs.
-void checkNesting(const std::string& text) {
-  int depth = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '{' || c == '[') {
-      if (++depth > kMaxJsonDepth) throw Error(ErrorCode::ParseError, "JSON nested deeper than " + std::to_string(kMaxJsonDepth));
-    } else if (c == '}' || c == ']') {
-      --depth;
-    }
-  }
-}
 
 void parseParameters(const json& j, Scene& scene, Resolver& r, int version) {
   if (!j.is_object()) fail(ErrorCode::InvalidField, "parameters", "expected an object of named parameters");
@@ -174,14 +154,7 @@ Scene parseScene(const std::string& text) {
 }
 
 static Scene parseSceneUnchecked(const std::string& text) {
-  if (text.size() > kMaxSceneBytes) throw Error(ErrorCode::ParseError, "scene larger than 1 MiB");
-  checkNesting(text);
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw Error(ErrorCode::ParseError, std::string("malformed JSON at byte ") + std::to_string(e.byte));
-  }
+  const json doc = readJson(text);
   if (!doc.is_object()) fail(ErrorCode::InvalidField, "scene", "expected an object");
   const json& format = require(doc, "format", "scene");
   if (!format.is_string() || format.get<std::string>() != "pdesurf-scene")
@@ -191,19 +164,19 @@ static Scene parseSceneUnchecked(const std::string& text) {
     fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 and 2");
   allowOnly(doc, "scene", {"format", "version", "id", "title", "description", "source", "parameters", "patches"});
   Scene scene;
-  scene.version = version.get<int>();
+  scene.version = static_cast<int>(version.get<long long>());
   if (doc.contains("title")) scene.title = stringField(doc["title"], "title");
   if (doc.contains("id")) stringField(doc["id"], "id", 64);
-  if (doc.contains("description")) stringField(doc["description"], "description", 2000);
+  if (doc.contains("description")) stringField(doc["description"], "description", 2000, true);
   if (doc.contains("source")) {
     allowOnly(doc["source"], "source", {"paper", "figure", "equation", "note"});
-    for (auto it = doc["source"].begin(); it != doc["source"].end(); ++it) stringField(it.value(), "source." + it.key(), 500);
+    for (auto it = doc["source"].begin(); it != doc["source"].end(); ++it) stringField(it.value(), "source." + it.key(), 500, true);
   }
   Resolver r;
   if (doc.contains("parameters")) parseParameters(doc["parameters"], scene, r, scene.version);
   const json& patches = require(doc, "patches", "scene");
   if (!patches.is_array() || patches.empty()) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array");
-  if (patches.size() > kMaxPatches) fail(ErrorCode::InvalidField, "patches", "more than " + std::to_string(kMaxPatches) + " patches");
+  if (patches.size() > limits::kPatches) fail(ErrorCode::TooLarge, "patches", "more than " + std::to_string(limits::kPatches) + " patches");
   std::set<std::string> names;
   for (size_t i = 0; i < patches.size(); ++i) {
     const std::string path = "patches[" + std::to_string(i) + "]";

@@ -5,6 +5,7 @@
 #include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
 #include "scene/scene.hpp"
+#include "surface/tabulation.hpp"
 
 namespace pdesurf {
 
@@ -25,6 +26,15 @@ const Patch* Scene::firstPde() const {
   for (const Patch& p : patches)
     if (p.kind == PatchKind::Pde) return &p;
   return nullptr;
+}
+
+void checkSceneGrid(const Scene& scene, int nu, int nv) {
+  checkGrid(nu, nv);
+  const size_t perPatch = static_cast<size_t>(nu + 1) * (nv + 1), total = perPatch * scene.patches.size();
+  if (total > limits::kSceneVertices)
+    throw Error(ErrorCode::TooLarge, std::to_string(scene.patches.size()) + " patches on a " + std::to_string(nu) + "x" + std::to_string(nv) +
+                                         " grid make " + std::to_string(total) + " vertices, over the " +
+                                         std::to_string(limits::kSceneVertices) + " a scene may draw at once");
 }
 
 namespace {

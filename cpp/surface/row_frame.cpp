@@ -14,7 +14,8 @@ namespace {
 template <bool Curvature>
 void frameChunk(const GridRow& row, RowFrame& f, float* P, float* Nf, float* H, float* K, size_t i0, size_t i1) {
   constexpr size_t kChunk = 256;
-  double pole[kChunk], flat[kChunk];
+  double pole[kChunk], flat[kChunk], bad[kChunk];
+  constexpr double kFloatMax = 3.4028234663852886e38, kDoubleMax = 1.7976931348623157e308;
   const double *xu = row.at(1, 0), *yu = row.at(1, 1), *zu = row.at(1, 2);
   const double *xv = row.at(2, 0), *yv = row.at(2, 1), *zv = row.at(2, 2);
   const double *xuu = nullptr, *yuu = nullptr, *zuu = nullptr, *xuv = nullptr, *yuv = nullptr, *zuv = nullptr,
@@ -31,6 +32,9 @@ void frameChunk(const GridRow& row, RowFrame& f, float* P, float* Nf, float* H, 
     const double E = xu[i] * xu[i] + yu[i] * yu[i] + zu[i] * zu[i], G = xv[i] * xv[i] + yv[i] * yv[i] + zv[i] * zv[i];
     const bool hasNormal = det > 1e-24 * E * G && det > 0;
     pole[i - i0] = hasNormal ? 0.0 : 1.0;
+    // NaN fails every comparison, so it lands here too.
+    const bool inRange = std::fabs(x[i]) <= kFloatMax && std::fabs(y[i]) <= kFloatMax && std::fabs(z[i]) <= kFloatMax && det <= kDoubleMax;
+    bad[i - i0] = inRange ? 0.0 : 1.0;
     const double inv = 1.0 / std::sqrt(hasNormal ? det : 1.0);
     const double unit = hasNormal ? inv : 0.0;
     P[3 * i] = static_cast<float>(x[i]), P[3 * i + 1] = static_cast<float>(y[i]), P[3 * i + 2] = static_cast<float>(z[i]);
@@ -54,6 +58,8 @@ void frameChunk(const GridRow& row, RowFrame& f, float* P, float* Nf, float* H, 
     }
   }
   for (size_t i = i0; i < i1; ++i) f.poles += pole[i - i0] != 0.0;
+  for (size_t i = i0; i < i1 && f.outOfRange < 0; ++i)
+    if (bad[i - i0] != 0.0) f.outOfRange = static_cast<long>(i);
   if constexpr (Curvature)
     for (size_t i = i0; i < i1; ++i) f.degenerate += flat[i - i0] != 0.0;
 }
@@ -63,6 +69,7 @@ void frameChunk(const GridRow& row, RowFrame& f, float* P, float* Nf, float* H, 
 void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
   const size_t m = row.d[0][0].size();
   f.poles = f.degenerate = 0;
+  f.outOfRange = -1;
   const bool curvature = H && K && row.quantities == 6;
   for (size_t i0 = 0; i0 < m; i0 += 256) {
     const size_t i1 = std::min(m, i0 + 256);

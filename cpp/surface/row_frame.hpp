@@ -9,6 +9,9 @@ namespace pdesurf {
 struct RowFrame {
   int poles = 0;       // points where |X_u × X_v|² ≤ 1e-24 E G: normal (0, 0, 0)
   int degenerate = 0;  // points where |X_u × X_v|² ≤ 1e-24 max(E, G)²: no curvature (H = K = 0)
+  // The first point whose position is not finite or beyond what a float holds, or whose
+  // derivatives overflow (its normal would be NaN); -1 when there is none. The caller throws.
+  long outOfRange = -1;
 };
 
 // Writes P[3i..3i+2] = X and N[3i..3i+2] = unit normal for the row's points i, and counts in

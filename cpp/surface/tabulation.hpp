@@ -6,6 +6,7 @@
 #pragma once
 #include <vector>
 
+#include "common/limits.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf {
@@ -28,7 +29,7 @@ struct Tabulation {
 // finite at a grid point. maxDerivative: 1 or 2.
 Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative = 1);
 
-constexpr int kMaxGrid = 2048;
+constexpr int kMaxGrid = limits::kGrid;
 void checkGrid(int nu, int nv);
 
 }  // namespace pdesurf

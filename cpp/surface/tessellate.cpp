@@ -25,6 +25,9 @@ GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
     for (size_t i = 0; i < m; ++i) {
       const size_t idx = j * m + i;
       for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(row.d[0][c][i]) || !std::isfinite(row.d[1][c][i]) || !std::isfinite(row.d[2][c][i]))
+          throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) +
+                                                ") or its derivatives are not finite");
         g.X[3 * idx + c] = row.d[0][c][i];
         g.Xu[3 * idx + c] = row.d[1][c][i];
         g.Xv[3 * idx + c] = row.d[2][c][i];
@@ -35,6 +38,11 @@ GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
 }
 
 namespace {
+
+[[noreturn]] void outOfRange(const Tabulation& t, size_t i, int j) {
+  throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) +
+                                        ") is beyond what a float holds (|x| > 3.4e38) or not finite");
+}
 
 void buildGridData(int nu, int nv, Mesh& m) {
   const size_t n = static_cast<size_t>(nu + 1) * (nv + 1);
@@ -107,6 +115,7 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
     else
       frameRow(row, pos + 3 * first, q, frame);
     m.degenerateVertices += frame.degenerate;
+    if (frame.outOfRange >= 0) outOfRange(t, frame.outOfRange, j);
     if (frame.poles > 0)  // rare: find the pole vertices of this row again
       for (size_t i = 0; i < w; ++i)
         if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(first + i);

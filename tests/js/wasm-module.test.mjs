@@ -64,7 +64,7 @@ test('bad input is a PdesurfError naming the field; the module keeps working', (
     [good.replace('"c": 2,', '"c": "exp(800)",'), 8, 'NonFinite', /operator\.c/],
     [good, 0, 'GridSize', /grid 0x8/],
     [good, 4096, 'GridSize', /grid 4096x8/],
-    ['[' .repeat(100000), 8, 'ParseError', /nested deeper/],
+    ['[' .repeat(100000), 8, 'TooLarge', /nested deeper/],
   ];
   for (let round = 0; round < 50; round++) {
     for (const [text, nu, code, message] of cases) {

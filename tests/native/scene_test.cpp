@@ -41,6 +41,48 @@ TEST_CASE("scene errors: malformed text") {
   CHECK(outcome(std::string(2 << 20, ' ')).find("larger than 1 MiB") != std::string::npos);
 }
 
+TEST_CASE("scene errors: the limits and strictness of docs/limits.md") {
+  // Depth: 32 levels pass the scan (and fail later, as fields), 33 do not.
+  const auto nest = [](int n) { return "{\"format\": " + std::string(n - 1, '[') + std::string(n - 1, ']') + "}"; };
+  CHECK(outcome(nest(32)).rfind("InvalidField", 0) == 0);
+  CHECK(outcome(nest(33)) == "TooLarge: JSON nested deeper than 32 levels");
+  // The same key twice, also when spelled differently.
+  CHECK(outcome("{\"format\": 1, \"format\": 2}").find("appears twice") != std::string::npos);
+  CHECK(outcome("{\"format\": 1, \"\\u0066ormat\": 2}").find("appears twice") != std::string::npos);
+  json j = json::parse(readText(examplePath("zhang-vase-fig2a.json")));  // expressions: version 2
+  CHECK(outcomeOf(j) == "ok");
+  // One-line strings: no control characters; descriptions may hold newlines.
+  json t = j;
+  t["title"] = "a\nv 1 2 3";
+  CHECK(outcomeOf(t).rfind("InvalidField: title: a control character", 0) == 0);
+  t = j;
+  t["description"] = "two\nlines\tand a tab";
+  CHECK(outcomeOf(t) == "ok");
+  t["description"] = std::string("bell\x07");
+  CHECK(outcomeOf(t).rfind("InvalidField: description", 0) == 0);
+  // Decimal numbers only.
+  t = j;
+  t["patches"][0]["boundary"]["z"]["u0"][0] = "0x10";
+  CHECK(outcomeOf(t).find("numbers are decimal") != std::string::npos);
+  t["patches"][0]["boundary"]["z"]["u0"][0] = "1.5e-3*2";
+  CHECK(outcomeOf(t) == "ok");
+  // The total vertex cap: refused before any solve.
+  const Scene scene = parseScene(j.dump());
+  CHECK_NOTHROW(checkSceneGrid(scene, 2048, 2048));
+  Scene two = scene;
+  two.patches.push_back(two.patches[0]);
+  CHECK_THROWS_WITH_AS(checkSceneGrid(two, 2048, 2048), doctest::Contains("vertices"), Error);
+  CHECK_THROWS_AS(checkSceneGrid(scene, 2049, 8), Error);
+}
+
+TEST_CASE("tessellation refuses output a float cannot hold") {
+  json j = json::parse(readText(examplePath("zhang-vase-fig2a.json")));
+  j["patches"][0]["boundary"]["x"]["u0"][0] = "1e200*cos(a1*v)";
+  CHECK(outcomeOf(j).find("NonFinite: the surface at (t, v) = (0.000000, 0.000000) is beyond what a float holds") == 0);
+  j["patches"][0]["boundary"]["x"]["u0"][0] = "1e30*cos(a1*v)";  // within float: fine
+  CHECK(outcomeOf(j) == "ok");
+}
+
 TEST_CASE("scene errors: fields") {
   json j = fig2a();
   j["format"] = "other";

@@ -1,12 +1,9 @@
-// Raw deflate through the platform's CompressionStream / DecompressionStream (both
-// browsers and Node ≥ 20). Inflation is capped while it runs: the input is fed in
-// small slices and the output counted as it is read, so a small hostile link cannot
-// make the page allocate (or spend time on) more than the cap before it is refused.
+// Raw deflate: written through the platform's CompressionStream (browsers and Node ≥ 20),
+// read through pako. Inflation is capped while it runs: the output is counted chunk by
+// chunk, so a small hostile link cannot make the page allocate (or spend time on) more
+// than the cap before it is refused.
+import { Inflate } from 'pako';
 import { LinkError } from './link-error.js';
-
-// Deflate expands at most ~1032:1, so one slice inflates to at most ~0.5 MiB before
-// the reader gets to count it.
-const INPUT_SLICE = 512;
 
 async function collect(readable) {
   const chunks = [];
@@ -40,51 +37,27 @@ export async function deflateRaw(bytes) {
   return out;
 }
 
-// Writes the input slice by slice, each after the previous one was taken in, so the
-// stream never holds more than one slice's output ahead of the reader.
-async function feed(writer, bytes) {
-  try {
-    for (let i = 0; i < bytes.length; i += INPUT_SLICE) {
-      await writer.ready;
-      await writer.write(bytes.subarray(i, i + INPUT_SLICE));
-    }
-    await writer.close();
-  } catch {
-    // The reader sees the same failure (or cancelled on purpose) and reports it.
-  }
-}
-
 /**
  * Raw deflate Uint8Array -> Uint8Array of at most `maxBytes`; throws LinkError for a
- * broken stream or one that inflates past the cap (stopped as soon as it does).
+ * broken or truncated stream, one that inflates past the cap (stopped as soon as it does),
+ * or bytes after the end of the stream (a second stream or junk would make one link mean
+ * two things). pako (zlib's inflate) rather than DecompressionStream, which ignores
+ * trailing bytes: the same rules as the CLI's zlib (cli/link_codec.cpp).
  */
 export async function inflateRawCapped(bytes, maxBytes) {
-  const ds = new DecompressionStream('deflate-raw');
-  const writer = ds.writable.getWriter();
-  const reader = ds.readable.getReader();
-  const feeding = feed(writer, bytes);
+  const inflator = new Inflate({ raw: true, chunkSize: 1 << 16 });
   const chunks = [];
   let total = 0;
-  try {
-    for (;;) {
-      let step;
-      try {
-        step = await reader.read();
-      } catch (err) {
-        // Both cut-off and corrupted streams end up here; the platform's wording varies.
-        throw new LinkError(`the link is truncated or damaged: its compressed data is broken (${err && err.message ? err.message : err})`);
-      }
-      if (step.done) break;
-      total += step.value.byteLength;
-      if (total > maxBytes) {
-        await reader.cancel().catch(() => {});
-        await writer.abort().catch(() => {});
-        throw new LinkError(`the link inflates to more than ${maxBytes} bytes; refused`);
-      }
-      chunks.push(step.value);
-    }
-  } finally {
-    await feeding;
-  }
+  const overCap = new LinkError(`the link inflates to more than ${maxBytes} bytes; refused`);
+  inflator.onData = (chunk) => {
+    total += chunk.byteLength;
+    if (total > maxBytes) throw overCap; // stops inflate() where it is
+    chunks.push(chunk.slice());
+  };
+  inflator.push(bytes, true);
+  if (inflator.err) throw new LinkError(`the link is truncated or damaged: its compressed data is broken (${inflator.msg || inflator.err})`);
+  if (!inflator.ended) throw new LinkError('the link is truncated or damaged: its compressed data is broken (it ends early)');
+  const trailing = inflator.strm.avail_in;
+  if (trailing > 0) throw new LinkError(`the link is damaged: ${trailing} bytes after the end of its compressed data`);
   return join(chunks, total);
 }

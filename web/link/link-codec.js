@@ -24,12 +24,14 @@ function stateField(text) {
   if (typeof text !== 'string') throw new LinkError('the link is not text');
   if (text.length > MAX_LINK_CHARS) throw new LinkError(`the link is too long (${text.length} characters)`);
   const hash = text.includes('#') ? text.slice(text.indexOf('#') + 1) : text;
-  // Chats and mail wrap long links: whitespace is never part of one.
-  const parts = hash.replace(/\s+/g, '').split('&');
+  // Chats and mail wrap long links: whitespace is never part of one. ASCII whitespace only,
+  // as the CLI (cli/link_codec.cpp) drops.
+  const parts = hash.replace(/[ \t\n\r\f\v]+/g, '').split('&');
   const field = parts.find((p) => p.startsWith('s='));
   if (field === undefined) throw new LinkError('the link holds no page state ("s=…")');
   let value = field.slice(2);
-  // Some tools percent-encode what they copy; base64url itself never contains '%'.
+  // Some tools percent-encode what they copy; base64url itself never contains '%'. The CLI
+  // decodes the same way (cli/link_codec.cpp).
   if (value.includes('%')) {
     try {
       value = decodeURIComponent(value);
@@ -43,7 +45,8 @@ function stateField(text) {
 /** A link (URL, "#…" or "s=…") -> { scene, grid?, camera? }; throws LinkError. */
 export async function decodeFragment(text) {
   const value = stateField(text);
-  const m = /^([0-9]{1,6})\.(.*)$/s.exec(value);
+  // The version is written without leading zeros: "01" is not "1" (nor to the CLI).
+  const m = /^(0|[1-9][0-9]{0,5})\.(.*)$/s.exec(value);
   if (!m) throw new LinkError('the link is damaged: expected "s=<version>.<data>"');
   const version = Number(m[1]);
   const decode = Object.hasOwn(DECODERS, version) ? DECODERS[version] : null;

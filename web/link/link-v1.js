@@ -3,6 +3,7 @@
 import { LinkError } from './link-error.js';
 import { encodeBase64url, decodeBase64url } from './base64url.js';
 import { deflateRaw, inflateRawCapped } from './deflate.js';
+import { parseStrictJson } from './strict-json.js';
 
 export const MAX_INFLATED_BYTES = 1 << 20; // 1 MiB, the scene size limit
 export const GRID_MIN = 4;
@@ -45,12 +46,7 @@ export async function decodeV1(payload) {
   } catch {
     throw new LinkError('the link is damaged: its content is not UTF-8 text');
   }
-  let obj;
-  try {
-    obj = JSON.parse(text);
-  } catch (err) {
-    throw new LinkError(`the link is damaged: its content is not JSON (${err.message})`);
-  }
+  const obj = parseStrictJson(text);
   if (!isObject(obj)) throw new LinkError('the link holds no page state (not a JSON object)');
   if (!('scene' in obj)) throw new LinkError('the link holds no scene');
   if (!isObject(obj.scene)) throw new LinkError('the link\'s scene is not a JSON object');

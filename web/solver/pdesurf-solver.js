@@ -52,8 +52,22 @@ export async function loadSolver(opts = {}) {
   };
 }
 
+// The scene as JSON text, or a PdesurfError: JSON.stringify throws RangeError on a too deep
+// object and TypeError on a cycle or a BigInt, and returns undefined for a function.
+function sceneText(scene) {
+  if (typeof scene === 'string') return scene;
+  let text;
+  try {
+    text = JSON.stringify(scene);
+  } catch (err) {
+    throw new PdesurfError('InvalidField', `the scene cannot be written as JSON: ${err && err.message ? err.message : err}`);
+  }
+  if (typeof text !== 'string') throw new PdesurfError('InvalidField', 'the scene cannot be written as JSON');
+  return text;
+}
+
 function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false, crossings = false } = {}) {
-  const text = typeof scene === 'string' ? scene : JSON.stringify(scene);
+  const text = sceneText(scene);
   const analysis = Boolean(curvature) || Boolean(joins);
   if (analysis && typeof Module.solveSceneWith !== 'function') {
     throw new PdesurfError('Load', 'this solver module has no analysis (solveSceneWith): rebuild the wasm module');

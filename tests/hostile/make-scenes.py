@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Writes tests/hostile/scenes/*.json and scenes.json: hostile scenes, each with the named
+error both the CLI and the wasm module must give (tests/js/hostile.test.mjs). Deterministic:
+run again after adding a case.   python3 tests/hostile/make-scenes.py"""
+import copy, json, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, '..', '..')
+load = lambda p: json.load(open(os.path.join(ROOT, p)))
+vase = load('examples/zhang-vase-fig2a.json')
+v1 = load('tests/fixtures/v1/you2004-fig2a.json')
+bez = load('examples/wu2015-fig1a.json')
+
+def with_(base, f):
+    d = copy.deepcopy(base); f(d); return d
+
+def set_boundary_x(d):
+    d['patches'][0]['boundary']['x']['u0'] = ['1e+200*cos(a1*v)']
+
+def v1_coef(d):
+    d['patches'][0]['boundary']['x']['u0'][0][0]['coef'] = 1e200
+
+def bezier_patch(d):
+    return [p for p in d['patches'] if p['kind'] == 'bezier'][0]
+
+def wrap_degree(d):
+    bezier_patch(d)['normals']['degree'] = [4294967297, 1]
+
+def big_assembly(d):
+    p = bezier_patch(d)
+    n = 16
+    p['degree'] = [n, n]
+    p['control_net'] = [[i / n, j / n, 0] for i in range(n + 1) for j in range(n + 1)]
+    p['normals'] = {'grid': [256, 256], 'field': {'x': '0', 'y': '0', 'z': '1'}}
+
+def many_patches(d):
+    base = d['patches'][0]
+    d['patches'] = [dict(copy.deepcopy(base), name=f'blend{k}') for k in range(64)]
+
+def hex_number(d):
+    d['patches'][0]['boundary']['z']['u0'] = ['0x10']
+
+cases = [
+    # file, scene (dict or raw text), grid, code, message substring, why
+    ('float-overflow', with_(vase, set_boundary_x), 16, 'NonFinite', 'beyond what a float holds',
+     'a boundary 1e+200 cos(v): finite in double, not in the float mesh (was written as "v inf 0 0")'),
+    ('v1-coefficient-1e200', with_(v1, v1_coef), 16, 'NonFinite', 'beyond what a float holds',
+     'a version-1 coefficient of 1e200: the float mesh held inf and NaN normals'),
+    ('newline-in-title', with_(vase, lambda d: d.__setitem__('title', 'a\nv 1 2 3')), 16, 'InvalidField', 'title',
+     'a newline would start a line of its own in the OBJ file'),
+    ('newline-in-patch-name', with_(vase, lambda d: d['patches'][0].__setitem__('name', 'x\nv 1 2 3\no y')), 16, 'InvalidField', 'name',
+     'a patch name is written as an OBJ "o" line'),
+    ('bezier-degree-wraps', with_(bez, wrap_degree), 16, 'InvalidField', 'degree[0]',
+     'an integer above INT_MAX (was read as 1)'),
+    ('bezier-assembly', with_(bez, big_assembly), 16, 'TooLarge', 'assembly work',
+     'degree 16 with a 257 x 257 normal field: ~20-70 s of assembly (was accepted)'),
+    ('64-patches-1024', with_(vase, many_patches), 1024, 'TooLarge', 'vertices',
+     '64 patches at 1024 x 1024: each within its cap, 67 M vertices together'),
+    ('hex-number', with_(vase, hex_number), 16, 'ParseError', 'decimal',
+     '0x10 was read as 16 by strtod, undocumented'),
+    ('duplicate-key', json.dumps(vase).replace('"version": 2', '"version": 2, "version": 2'), 16, 'ParseError', 'twice',
+     'the last of two equal keys won silently'),
+    ('deep-1000', '{"format": ' + '[' * 1000 + ']' * 1000 + '}', 16, 'TooLarge', 'nested deeper',
+     '1,000 nested arrays'),
+]
+
+os.makedirs(os.path.join(HERE, 'scenes'), exist_ok=True)
+manifest = {'format': 'pdesurf-hostile-scenes', 'version': 1, 'scenes': []}
+for name, scene, grid, code, message, why in cases:
+    text = scene if isinstance(scene, str) else json.dumps(scene, indent=1)
+    with open(os.path.join(HERE, 'scenes', name + '.json'), 'w') as f:
+        f.write(text + '\n')
+    manifest['scenes'].append({'name': name, 'file': f'scenes/{name}.json', 'grid': grid, 'code': code, 'message': message, 'why': why})
+with open(os.path.join(HERE, 'scenes.json'), 'w') as f:
+    f.write(json.dumps(manifest, indent=2, ensure_ascii=False) + '\n')
+print(len(cases), 'scenes written')
