@@ -1,7 +1,11 @@
 #!/usr/bin/env node
-// Tiny static server for the pdesurf modeller: serves the repo root, maps /wasm/ to
-// build/wasm/ (or $PDESURF_WASM_DIR). No dependencies, so it runs on a fresh checkout.
+// Tiny static server for the pdesurf modeller: serves only what the page needs (web/,
+// examples/, node_modules/three/ and /pako/, and as /wasm/ the .js and .wasm files of
+// build/wasm/ or $PDESURF_WASM_DIR), every response with security headers (a CSP that
+// allows no inline script but the importmap).
+// No dependencies, so it runs on a fresh checkout.
 //   node scripts/static-server.mjs [--port 8000] [--host 127.0.0.1]
+import crypto from 'node:crypto';
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -32,77 +36,146 @@ function sendText(res, status, text, extraHeaders = {}) {
   res.end(text + '\n');
 }
 
-// Resolve `rel` under `base`; null when it would escape `base`.
-function safeJoin(base, rel) {
-  const full = path.resolve(base, '.' + path.posix.sep + rel);
-  const baseWithSep = base.endsWith(path.sep) ? base : base + path.sep;
-  if (full !== base && !full.startsWith(baseWithSep)) return null;
-  return full;
+// The only trees served, as URL segments -> the same path under the root: the page, the
+// examples it fetches, and the npm packages its importmap names (pako: planned for links).
+const TREES = [['web'], ['examples'], ['node_modules', 'three'], ['node_modules', 'pako']];
+// /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
+// to system headers: only its top-level .js and .wasm files.
+const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;
+
+// Embind (without -sDYNAMIC_EXECUTION=0, as build/wasm is built) compiles its invokers with
+// new Function, hence 'unsafe-eval'. lil-gui injects its stylesheet as a <style> element,
+// hence 'unsafe-inline' for styles only (styles cannot run script), and that stylesheet
+// embeds its icon font as a data: URL. The importmap is the one inline script, allowed by
+// its hash.
+function contentSecurityPolicy(importmapHashes) {
+  const hashes = importmapHashes.map((h) => `'sha256-${h}'`);
+  return [
+    "default-src 'self'", ["script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'", ...hashes].join(' '),
+    "style-src 'self' 'unsafe-inline'", "font-src 'self' data:", "img-src 'self' data: blob:",
+    "connect-src 'self'", "worker-src 'self' blob:", "object-src 'none'",
+    "base-uri 'none'", "frame-ancestors 'none'", "form-action 'none'",
+  ].join('; ');
 }
 
-// Map a decoded URL path to a file on disk, or null for a traversal attempt.
-function resolvePath(urlPath, root, wasmDir) {
-  if (urlPath.includes('\0')) return null;
-  // Reject ".." segments outright (also when encoded), before any normalisation.
-  if (urlPath.split(/[\\/]/).includes('..')) return null;
-  if (urlPath.startsWith('/wasm/')) return safeJoin(wasmDir, urlPath.slice('/wasm/'.length));
-  return safeJoin(root, urlPath.slice(1));
+// sha256 (base64) of each inline importmap in `html`, as the browser hashes it: the text
+// between the tags with newlines normalised to LF (the HTML parser does that first).
+export function importmapHashes(html) {
+  const re = /<script\b[^>]*\btype\s*=\s*["']?importmap["']?[^>]*>([\s\S]*?)<\/script\s*>/gi;
+  return [...html.matchAll(re)].map((m) =>
+    crypto.createHash('sha256').update(m[1].replace(/\r\n?/g, '\n'), 'utf8').digest('base64'));
+}
+
+// The headers of every response, re-read when web/index.html changes so an edited
+// importmap keeps its hash without a restart.
+function securityHeaders(root) {
+  const page = path.join(root, 'web', 'index.html');
+  let stamp = null;
+  let headers = null;
+  return () => {
+    const mtime = fs.statSync(page, { throwIfNoEntry: false })?.mtimeMs ?? -1;
+    if (headers && mtime === stamp) return headers;
+    const html = mtime < 0 ? '' : fs.readFileSync(page, 'utf8');
+    stamp = mtime;
+    headers = {
+      'Content-Security-Policy': contentSecurityPolicy(importmapHashes(html)),
+      'X-Content-Type-Options': 'nosniff',
+      'Referrer-Policy': 'no-referrer',
+      'Cross-Origin-Opener-Policy': 'same-origin',
+      'Cross-Origin-Resource-Policy': 'same-origin',
+    };
+    return headers;
+  };
+}
+
+// The allowed directory and the path below it for a URL path, or null when nothing is
+// served there. Segments starting with '.' (dotfiles, .git, ..) never are.
+function mapPath(urlPath, root, wasmDir) {
+  const segs = urlPath.split('/').slice(1);
+  if (segs.some((s) => s.startsWith('.'))) return null;
+  if (segs[0] === 'wasm') {
+    return segs.length === 2 && WASM_FILE.test(segs[1]) ? { base: wasmDir, rest: [segs[1]], dirs: false } : null;
+  }
+  const tree = TREES.find((t) => t.every((s, i) => segs[i] === s));
+  return tree ? { base: path.join(root, ...tree), rest: segs.slice(tree.length), dirs: true } : null;
+}
+
+// The real path and stat of `file`, or null unless it is inside the real `base`
+// (so a symlink may not lead out of its tree).
+async function inside(base, file) {
+  try {
+    const [realBase, real] = await Promise.all([fs.promises.realpath(base), fs.promises.realpath(file)]);
+    if (real !== realBase && !real.startsWith(realBase + path.sep)) return null;
+    return { real, st: await fs.promises.stat(real) };
+  } catch {
+    return null;
+  }
 }
 
 function handler(root, wasmDir) {
+  const security = securityHeaders(root);
   return (req, res) => {
-    if (req.method !== 'GET' && req.method !== 'HEAD') {
-      sendText(res, 405, 'method not allowed', { Allow: 'GET, HEAD' });
-      return;
-    }
-    let urlPath;
-    try {
-      urlPath = decodeURIComponent(new URL(req.url, 'http://localhost').pathname);
-    } catch {
-      sendText(res, 400, 'bad request');
-      return;
-    }
-    if (urlPath === '/') {
-      res.writeHead(302, { Location: '/web/', 'Content-Type': 'text/plain; charset=utf-8' });
-      res.end('see /web/\n');
-      return;
-    }
-    let file = resolvePath(urlPath, root, wasmDir);
-    if (!file) {
-      sendText(res, 403, 'forbidden');
-      return;
-    }
-    fs.stat(file, (err, st) => {
-      if (!err && st.isDirectory()) {
-        // Directories need a trailing slash so relative URLs in index.html resolve.
-        if (!urlPath.endsWith('/')) {
-          res.writeHead(301, { Location: urlPath + '/', 'Content-Type': 'text/plain; charset=utf-8' });
-          res.end('moved\n');
-          return;
-        }
-        file = path.join(file, 'index.html');
-        st = fs.existsSync(file) ? fs.statSync(file) : null;
-      }
-      if (err || !st || !st.isFile()) {
-        sendText(res, 404, `not found: ${urlPath}`);
-        return;
-      }
-      const type = MIME[path.extname(file).toLowerCase()] || 'application/octet-stream';
-      res.writeHead(200, {
-        'Content-Type': type,
-        'Content-Length': st.size,
-        // Development server: always serve the freshly built wasm and sources.
-        'Cache-Control': 'no-cache',
-      });
-      if (req.method === 'HEAD') {
-        res.end();
-        return;
-      }
-      const stream = fs.createReadStream(file);
-      stream.on('error', () => res.destroy());
-      stream.pipe(res);
+    for (const [k, v] of Object.entries(security())) res.setHeader(k, v);
+    serve(req, res, root, wasmDir).catch(() => {
+      if (res.headersSent) res.destroy();
+      else sendText(res, 500, 'internal error');
     });
   };
+}
+
+async function serve(req, res, root, wasmDir) {
+  if (req.method !== 'GET' && req.method !== 'HEAD') {
+    sendText(res, 405, 'method not allowed', { Allow: 'GET, HEAD' });
+    return;
+  }
+  let urlPath, rawPath;
+  try {
+    rawPath = new URL(req.url, 'http://localhost').pathname;
+    urlPath = decodeURIComponent(rawPath);
+  } catch {
+    sendText(res, 400, 'bad request');
+    return;
+  }
+  if (urlPath === '/') {
+    res.writeHead(302, { Location: '/web/', 'Content-Type': 'text/plain; charset=utf-8' });
+    res.end('see /web/\n');
+    return;
+  }
+  // Reject NUL and ".." segments outright (also when encoded), before any normalisation.
+  if (urlPath.includes('\0') || urlPath.split(/[\\/]/).includes('..')) {
+    sendText(res, 403, 'forbidden');
+    return;
+  }
+  const mapped = mapPath(urlPath, root, wasmDir);
+  let found = mapped && (await inside(mapped.base, path.join(mapped.base, ...mapped.rest)));
+  if (found?.st.isDirectory() && mapped.dirs) {
+    // Directories need a trailing slash so relative URLs in index.html resolve.
+    if (!urlPath.endsWith('/')) {
+      res.writeHead(301, { Location: rawPath + '/', 'Content-Type': 'text/plain; charset=utf-8' });
+      res.end('moved\n');
+      return;
+    }
+    found = await inside(mapped.base, path.join(found.real, 'index.html'));
+  }
+  if (!found || !found.st.isFile()) {
+    sendText(res, 404, `not found: ${urlPath}`);
+    return;
+  }
+  const type = MIME[path.extname(found.real).toLowerCase()] || 'application/octet-stream';
+  res.writeHead(200, {
+    'Content-Type': type,
+    'Content-Length': found.st.size,
+    // Development server: always serve the freshly built wasm and sources.
+    'Cache-Control': 'no-cache',
+  });
+  if (req.method === 'HEAD' || found.st.size === 0) {
+    res.end();
+    return;
+  }
+  // No more than Content-Length, even when the file grows while it is read (an editor saving).
+  const stream = fs.createReadStream(found.real, { start: 0, end: found.st.size - 1 });
+  stream.on('error', () => res.destroy());
+  stream.pipe(res);
 }
 
 /**

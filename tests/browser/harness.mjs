@@ -26,7 +26,7 @@ export const skip = fs.existsSync(CHROMIUM) ? false : `${CHROMIUM} is missing (a
 
 export const exampleIndex = () => JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'index.json'), 'utf8')).examples;
 
-/** Start server + browser. Returns { base, problems, open(url) -> page, close() }. */
+/** Start server + browser. Returns { base, problems, context, open(url) -> page, close() }. */
 export async function startHarness() {
   assert.ok(fs.existsSync(path.join(WASM_DIR, 'pdesurf.js')), `no wasm module in ${WASM_DIR}: build it first (scripts/build-wasm)`);
   assert.ok(fs.existsSync(path.join(ROOT, 'examples', 'index.json')), `no examples/index.json under ${ROOT}`);
@@ -46,6 +46,7 @@ export async function startHarness() {
   return {
     base,
     problems,
+    context, // for context-wide init scripts and response listeners
     /** A fresh page (closing none) loading `url` and waiting for its first draw or error. */
     async open(url, { wait = true } = {}) {
       const page = first || (await context.newPage());
