@@ -37,21 +37,21 @@ function sendText(res, status, text, extraHeaders = {}) {
 }
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
-// examples it fetches, and the npm packages its importmap names (pako: planned for links).
+// examples it fetches, and the npm packages its importmap names (pako: the link decoder).
 const TREES = [['web'], ['examples'], ['node_modules', 'three'], ['node_modules', 'pako']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
 const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;
 
-// Embind (without -sDYNAMIC_EXECUTION=0, as build/wasm is built) compiles its invokers with
-// new Function, hence 'unsafe-eval'. lil-gui injects its stylesheet as a <style> element,
+// No 'unsafe-eval': the wasm module is linked with -sDYNAMIC_EXECUTION=0, so embind builds
+// its invokers without new Function. lil-gui injects its stylesheet as a <style> element,
 // hence 'unsafe-inline' for styles only (styles cannot run script), and that stylesheet
 // embeds its icon font as a data: URL. The importmap is the one inline script, allowed by
 // its hash.
 function contentSecurityPolicy(importmapHashes) {
   const hashes = importmapHashes.map((h) => `'sha256-${h}'`);
   return [
-    "default-src 'self'", ["script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'", ...hashes].join(' '),
+    "default-src 'self'", ["script-src 'self' 'wasm-unsafe-eval'", ...hashes].join(' '),
     "style-src 'self' 'unsafe-inline'", "font-src 'self' data:", "img-src 'self' data: blob:",
     "connect-src 'self'", "worker-src 'self' blob:", "object-src 'none'",
     "base-uri 'none'", "frame-ancestors 'none'", "form-action 'none'",

@@ -43,6 +43,7 @@ describe('content security policy', { skip }, () => {
     const csp = await documents.at(-1).headerValue('content-security-policy');
     assert.match(csp ?? '', /script-src 'self' [^;]*'sha256-[A-Za-z0-9+/]+=*'/);
     assert.doesNotMatch(csp, /script-src[^;]*'unsafe-inline'/);
+    assert.doesNotMatch(csp, /'unsafe-eval'/, 'the wasm module is linked with -sDYNAMIC_EXECUTION=0: no eval needed');
     assert.deepEqual(await page.evaluate(() => window.__cspViolations), []);
     assert.deepEqual(cspMessages, []);
     assert.deepEqual(h.problems, []);
