@@ -154,7 +154,8 @@ int gridArg(const val& v, const char* name) {
   return static_cast<int>(x);  // the range: checkGrid
 }
 
-val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvArg, bool curvature, bool joins, bool crossings) {
+val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvArg, bool curvature, bool joins, bool crossings,
+                 bool topology) {
   try {
     const int nu = gridArg(nuArg, "nu"), nv = gridArg(nvArg, "nv");
     checkGrid(nu, nv);
@@ -190,8 +191,10 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
       if (sp.patch->kind == PatchKind::Bezier) setBezierExtras(p, sp);
       p.set("positions", copyOut(m.positions));
       p.set("normals", copyOut(m.normals));
-      p.set("uvs", copyOut(m.uvs));
-      p.set("indices", copyOut(m.indices));
+      if (topology) {  // uvs and indices change only with the grid: the page asks when it did
+        p.set("uvs", copyOut(m.uvs));
+        p.set("indices", copyOut(m.indices));
+      }
       if (curvature) {
         p.set("meanCurvature", copyOut(m.meanCurvature));
         p.set("gaussCurvature", copyOut(m.gaussCurvature));
@@ -217,9 +220,10 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
   }
 }
 
-val solveScenePlain(const std::string& sceneJson, val nu, val nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false); }
+val solveScenePlain(const std::string& sceneJson, val nu, val nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false, true); }
 
-// options: {curvature: bool, joins: bool, crossings: bool} (crossings only with joins);
+// options: {curvature: bool, joins: bool, crossings: bool (only with joins), topology: bool
+// (default true; false leaves out uvs and indices, which change only with the grid)};
 // anything else (or a missing key) counts as false.
 val solveSceneWith(const std::string& sceneJson, val nu, val nv, val options) {
   const auto flag = [&](const char* key) {
@@ -227,7 +231,9 @@ val solveSceneWith(const std::string& sceneJson, val nu, val nv, val options) {
     const val v = options[key];
     return v.typeOf().as<std::string>() == "boolean" && v.as<bool>();
   };
-  return solveSceneJs(sceneJson, nu, nv, flag("curvature"), flag("joins"), flag("crossings"));
+  const bool isObject = !options.isUndefined() && !options.isNull() && options.typeOf().as<std::string>() == "object";
+  const bool topology = !(isObject && options["topology"].typeOf().as<std::string>() == "boolean" && !options["topology"].as<bool>());
+  return solveSceneJs(sceneJson, nu, nv, flag("curvature"), flag("joins"), flag("crossings"), topology);
 }
 
 std::string version() { return "0.1.0"; }

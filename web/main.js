@@ -1,7 +1,8 @@
 // Page wiring: load the solver and the example catalogue, open what the URL hash
 // names (a shared link, an example, or the default example), and re-solve whenever
 // the scene (the page state) changes.
-import { loadSolver } from './solver/pdesurf-solver.js';
+import { createSolverClient } from './solver/solver-client.js';
+import { gridTopology } from './viewer/grid-topology.js';
 import { createViewer } from './viewer/viewer.js';
 import { createPanel } from './ui/panel.js';
 import { createGallery } from './ui/gallery.js';
@@ -51,13 +52,21 @@ async function start() {
     fail(new Error(`cannot start WebGL: ${err.message}`));
     return;
   }
-  let solver, examples;
+  let examples;
   try {
-    [solver, examples] = await Promise.all([loadSolver(), loadExampleIndex()]);
+    examples = await loadExampleIndex();
   } catch (err) {
     fail(err);
     return;
   }
+  // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
+  const solver = createSolverClient({
+    onResult: (result, job, ms) => applyResult(result, job, ms),
+    onError: (err, job) => applyFailure(err, job),
+    onBusy: (ms) => status.busy(ms),
+  });
+  hooks.solverRestarts = () => solver.restarts;
+  let sceneToken = 0; // a new scene (example or link): results for an older one are dropped
 
   const state = createSceneState();
   const scheduler = createSolveScheduler(solveNow);
@@ -124,8 +133,7 @@ async function start() {
   const share = createShareWiring({ viewer, panel, status, hooks });
   let quiet = false; // the next solve only adds analysis data: not a user's edit
   analysis = createAnalysisWiring({
-    // false for a module built before solveSceneWith: no curvature, no join report
-    panel, viewer, hasAnalysis: typeof solver.module?.solveSceneWith === 'function',
+    panel, viewer, hasAnalysis: true,
     requestSolve: () => {
       quiet = true;
       scheduler.request();
@@ -134,6 +142,7 @@ async function start() {
 
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
+    sceneToken++;
     share.opening();
     opening = true;
     state.setScene(scene, exampleId);
@@ -202,37 +211,48 @@ async function start() {
     return openExample(h.kind === 'example' ? h.id : examples[0].id);
   }
 
+  // Sends the scene to the worker; the result comes back in applyResult (or applyFailure).
   function solveNow() {
     if (!state.scene) return;
-    hooks.solveCount++;
     const edited = !opening && !quiet;
     opening = false;
     quiet = false;
-    const options = analysis.solveOptions();
-    const t0 = performance.now();
-    let result;
     let text;
     try {
-      // Inside the try: writing the scene as text can throw too (a cyclic or too deep object).
-      text = state.text();
-      result = solver.solve(text, { ...state.grid, ...options });
+      text = state.text(); // a cyclic or too deep object throws here
     } catch (err) {
-      if (linkPending) {
-        // The link decoded but its scene does not solve: nothing good to keep on screen.
-        linkPending = false;
-        notice = `cannot open the link: ${messageOf(err)}`;
-        openExample(examples[0].id);
-        return;
-      }
-      fail(err);
-      panel.showSolveError(err && err.message ? err.message : String(err));
+      applyFailure({ code: 'InvalidField', message: `the scene cannot be written as JSON: ${err.message}` }, { edited });
       return;
     }
-    const ms = performance.now() - t0;
+    const grid = { nu: state.grid.nu, nv: state.grid.nv };
+    solver.request({ scene: text, grid, options: { ...grid, ...analysis.solveOptions() }, edited, token: sceneToken });
+  }
+
+  function applyFailure(err, job) {
+    hooks.solveCount++;
+    if (linkPending) {
+      // The link decoded but its scene does not solve: nothing good to keep on screen.
+      linkPending = false;
+      notice = `cannot open the link: ${messageOf(err)}`;
+      openExample(examples[0].id);
+      return;
+    }
+    fail(err);
+    panel.showSolveError(err && err.message ? err.message : String(err));
+  }
+
+  function applyResult(result, job, ms) {
+    hooks.solveCount++;
+    // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
+    const topology = gridTopology(job.grid.nu, job.grid.nv);
+    for (const p of result.patches) {
+      p.uvs = topology.uvs;
+      p.indices = topology.indices;
+    }
     linkPending = false;
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
-    analysis.solved(result, options);
+    analysis.solved(result, job.options);
     if (cameraPending) viewer.setCamera(cameraPending);
     else if (fitPending) viewer.fit();
     cameraPending = null;
@@ -240,14 +260,14 @@ async function start() {
     panel.showSolved(result.patches);
     hooks.lastError = null;
     hooks.ready = true;
-    const { nu, nv } = state.grid;
+    const { nu, nv } = job.grid;
     const n = result.patches.length;
     const summary = `${n} ${n === 1 ? 'patch' : 'patches'}, grid ${nu}×${nv}, solved in ${ms.toFixed(1)} ms`;
     hooks.notice = notice;
     if (notice) status.error(notice);
     else status.info(summary);
     notice = null;
-    share.solved(text, state.grid, summary, edited);
+    share.solved(job.scene, job.grid, summary, job.edited);
   }
 
   // A link pasted into the address bar or history navigation opens what it names;

@@ -66,16 +66,20 @@ function sceneText(scene) {
   return text;
 }
 
-function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false, crossings = false } = {}) {
+// topology: false leaves out uvs and indices (they change only with the grid; the page
+// keeps its own).
+function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins = false, crossings = false, topology = true } = {}) {
   const text = sceneText(scene);
-  const analysis = Boolean(curvature) || Boolean(joins);
+  const analysis = Boolean(curvature) || Boolean(joins) || topology === false;
   if (analysis && typeof Module.solveSceneWith !== 'function') {
     throw new PdesurfError('Load', 'this solver module has no analysis (solveSceneWith): rebuild the wasm module');
   }
   let res;
   try {
     res = analysis
-      ? Module.solveSceneWith(text, nu, nv, { curvature: Boolean(curvature), joins: Boolean(joins), crossings: Boolean(crossings) })
+      ? Module.solveSceneWith(text, nu, nv, {
+        curvature: Boolean(curvature), joins: Boolean(joins), crossings: Boolean(crossings), topology: topology !== false,
+      })
       : Module.solveScene(text, nu, nv);
   } catch (err) {
     // Should not happen (the binding catches), but never let a raw throw escape.
@@ -107,9 +111,11 @@ function normalisePatch(p) {
     kind: String(p.kind),
     positions: typed(p.positions, Float32Array, 'positions'),
     normals: typed(p.normals, Float32Array, 'normals'),
-    uvs: typed(p.uvs, Float32Array, 'uvs'),
-    indices: typed(p.indices, Uint32Array, 'indices'),
   };
+  if (p.uvs !== undefined) {
+    out.uvs = typed(p.uvs, Float32Array, 'uvs');
+    out.indices = typed(p.indices, Uint32Array, 'indices');
+  }
   if (p.meanCurvature !== undefined) {
     // Mean H (signed with respect to the drawn normal) and Gaussian K per vertex; 0 where degenerate.
     out.meanCurvature = typed(p.meanCurvature, Float32Array, 'meanCurvature');

@@ -37,15 +37,43 @@ export function geometryFromPatch(patch) {
   return g;
 }
 
+/**
+ * A newer solve of the same patch on the same grid: its positions and normals replace the
+ * attributes' arrays in place (the GPU buffers are updated, not recreated; uvs and indices
+ * stay).
+ */
+export function updateMeshFromPatch(mesh, patch) {
+  const g = mesh.geometry;
+  for (const [name, array] of [['position', patch.positions], ['normal', patch.normals]]) {
+    const a = g.getAttribute(name);
+    a.array = array;
+    a.needsUpdate = true;
+  }
+  g.computeBoundingBox();
+  g.computeBoundingSphere();
+  setCurvature(mesh, patch);
+}
+
+/** Whether `mesh` can take `patch` in place: same patch, same number of vertices. */
+export function fitsMesh(mesh, patch) {
+  return mesh.name === patch.name && mesh.userData.kind === patch.kind && mesh.geometry.getAttribute('position').array.length === patch.positions.length;
+}
+
+function setCurvature(mesh, patch) {
+  // Per-vertex H and K from the module (solveSceneWith {curvature: true}), for the colour maps.
+  if (patch.meanCurvature) {
+    mesh.userData.curvature = { meanCurvature: patch.meanCurvature, gaussCurvature: patch.gaussCurvature };
+  } else {
+    delete mesh.userData.curvature;
+  }
+}
+
 /** A mesh for one patch; userData keeps the name and kind for lookups and tests. */
 export function meshFromPatch(patch) {
   const solved = patch.kind === 'pde' || patch.kind === 'bezier';
   const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
   mesh.userData = { kind: patch.kind, patchName: patch.name };
-  // Per-vertex H and K from the module (solveSceneWith {curvature: true}), for the colour maps.
-  if (patch.meanCurvature) {
-    mesh.userData.curvature = { meanCurvature: patch.meanCurvature, gaussCurvature: patch.gaussCurvature };
-  }
+  setCurvature(mesh, patch);
   return mesh;
 }

@@ -3,7 +3,7 @@
 // Renders on demand (after a change or a camera move) to keep idle CPU at zero.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { meshFromPatch } from './patch-mesh.js';
+import { meshFromPatch, updateMeshFromPatch, fitsMesh } from './patch-mesh.js';
 import { fitCameraToObject } from './fit-camera.js';
 import { createBezierLayer } from './bezier-layer.js';
 import { createControlPointEditor } from './control-point-editor.js';
@@ -72,13 +72,21 @@ export function createViewer(container, bezierEditing) {
     controls,
     editor,
 
-    /** Replace the drawn patches with freshly solved ones. */
+    /**
+     * Replace the drawn patches with freshly solved ones: in place when the same patches
+     * come back on the same grid (a slider drag), else new meshes.
+     */
     setPatches(patches) {
-      for (const m of [...surfaces.children]) {
-        surfaces.remove(m);
-        m.geometry.dispose(); // materials are shared, keep them
+      const meshes = surfaces.children;
+      if (meshes.length === patches.length && patches.every((p, k) => fitsMesh(meshes[k], p))) {
+        patches.forEach((p, k) => updateMeshFromPatch(meshes[k], p));
+      } else {
+        for (const m of [...meshes]) {
+          surfaces.remove(m);
+          m.geometry.dispose(); // materials are shared, keep them
+        }
+        for (const p of patches) surfaces.add(meshFromPatch(p));
       }
-      for (const p of patches) surfaces.add(meshFromPatch(p));
       shading.refresh();
       bezier.update(patches);
       editor.refresh();

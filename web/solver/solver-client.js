@@ -1,0 +1,106 @@
+// The page's side of the solver worker (solver-worker.js): one solve at a time, requests
+// coalesced (only the newest waiting request runs next), results of an older scene dropped,
+// and a solve that keeps a newer edit waiting too long cancelled by restarting the worker.
+//
+// createSolverClient({ onResult(result, job, ms), onError(error, job), onBusy(ms | null) })
+//   .request(job)  job: { scene (text), options, token }; a result whose token differs from
+//                  the newest request's is stale and dropped (another scene was opened).
+//   .busy()        true while a solve runs
+//   .restarts      how many solves were cancelled (for tests)
+
+// A waiting edit cancels the running solve after this long, or after 1.5 times the last
+// solve's time if that is longer: a scene that always takes a second still shows a result
+// per second during a drag, while a solve far slower than the last (a pathological edit)
+// gives way to the next edit.
+const CANCEL_AFTER_MS = 300;
+const BUSY_AFTER_MS = 100; // "solving…" only for solves one can notice
+
+export function createSolverClient({ onResult, onError, onBusy = () => {}, workerUrl = new URL('./solver-worker.js', import.meta.url) }) {
+  let worker = null;
+  let running = null; // { id, job, started }
+  let waiting = null; // { job, since }
+  let nextId = 1;
+  let lastMs = 0;
+  let latestToken = null;
+  let busyTimer = 0;
+  let cancelTimer = 0;
+  const client = { restarts: 0 };
+
+  function spawn() {
+    worker = new Worker(workerUrl, { type: 'module' });
+    worker.onmessage = (e) => finished(e.data);
+    // A worker that fails to load (or crashes) fails its request; the next one respawns it.
+    worker.onerror = (e) => {
+      e.preventDefault();
+      const job = running?.job;
+      stopRunning();
+      worker.terminate();
+      worker = null;
+      if (job) onError({ code: 'Load', message: `the solver worker failed: ${e.message || 'unknown error'}` }, job);
+      next();
+    };
+  }
+
+  function stopRunning() {
+    running = null;
+    clearInterval(busyTimer);
+    busyTimer = 0;
+    onBusy(null);
+  }
+
+  function dispatch(job) {
+    if (!worker) spawn();
+    running = { id: nextId++, job, started: performance.now() };
+    worker.postMessage({ id: running.id, scene: job.scene, options: job.options });
+    busyTimer = setInterval(() => {
+      const ms = performance.now() - running.started;
+      if (ms >= BUSY_AFTER_MS) onBusy(ms);
+    }, BUSY_AFTER_MS);
+  }
+
+  function next() {
+    clearTimeout(cancelTimer);
+    cancelTimer = 0;
+    if (!waiting || running) return;
+    const { job } = waiting;
+    waiting = null;
+    dispatch(job);
+  }
+
+  function finished(msg) {
+    if (!running || msg.id !== running.id) return;
+    const { job } = running;
+    lastMs = msg.ms;
+    stopRunning();
+    if (job.token === latestToken) {
+      if (msg.ok) onResult(msg.result, job, msg.ms);
+      else onError(msg.error, job);
+    }
+    next();
+  }
+
+  // The running solve has kept a newer request waiting past the limit: drop the worker (and
+  // its caches: a terminated worker cannot be interrupted any other way) and start afresh.
+  function cancelIfStuck() {
+    cancelTimer = 0;
+    if (!running || !waiting) return;
+    client.restarts++;
+    worker.terminate();
+    worker = null;
+    stopRunning();
+    next();
+  }
+
+  client.request = (job) => {
+    latestToken = job.token;
+    if (!running) {
+      dispatch(job);
+      return;
+    }
+    if (!waiting) waiting = { job, since: performance.now() };
+    else waiting.job = job; // coalesce: only the newest waiting request will run
+    if (!cancelTimer) cancelTimer = setTimeout(cancelIfStuck, Math.max(CANCEL_AFTER_MS, 1.5 * lastMs));
+  };
+  client.busy = () => running !== null;
+  return client;
+}
