@@ -1,8 +1,10 @@
 #!/usr/bin/env node
-// Tiny static server for the pdesurf modeller: serves only what the page needs (web/,
-// examples/, node_modules/three/ and /pako/, and as /wasm/ the .js and .wasm files of
-// build/wasm/ or $PDESURF_WASM_DIR), every response with security headers (a CSP that
-// allows no inline script but the importmap).
+// Tiny static server for the pdesurf modeller: serves only what the page needs (the
+// production build build/web/ as /app/, the sources web/ as /web/, examples/,
+// node_modules/three/ and /pako/, and as /wasm/ the .js and .wasm files of build/wasm/ or
+// $PDESURF_WASM_DIR), every response with security headers (a CSP that allows no inline
+// script but the importmap), compressed when the client accepts it (lib/encoded-body.mjs),
+// with an ETag.
 // No dependencies, so it runs on a fresh checkout.
 //   node scripts/static-server.mjs [--port 8000] [--host 127.0.0.1]
 import crypto from 'node:crypto';
@@ -10,6 +12,7 @@ import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { encodedBody } from './lib/encoded-body.mjs';
 
 const REPO_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 
@@ -90,9 +93,10 @@ function securityHeaders(root) {
 
 // The allowed directory and the path below it for a URL path, or null when nothing is
 // served there. Segments starting with '.' (dotfiles, .git, ..) never are.
-function mapPath(urlPath, root, wasmDir) {
+function mapPath(urlPath, root, wasmDir, appDir) {
   const segs = urlPath.split('/').slice(1);
   if (segs.some((s) => s.startsWith('.'))) return null;
+  if (segs[0] === 'app') return { base: appDir, rest: segs.slice(1), dirs: true };
   if (segs[0] === 'wasm') {
     return segs.length === 2 && WASM_FILE.test(segs[1]) ? { base: wasmDir, rest: [segs[1]], dirs: false } : null;
   }
@@ -112,18 +116,18 @@ async function inside(base, file) {
   }
 }
 
-function handler(root, wasmDir) {
+function handler(root, wasmDir, appDir) {
   const security = securityHeaders(root);
   return (req, res) => {
     for (const [k, v] of Object.entries(security())) res.setHeader(k, v);
-    serve(req, res, root, wasmDir).catch(() => {
+    serve(req, res, root, wasmDir, appDir).catch(() => {
       if (res.headersSent) res.destroy();
       else sendText(res, 500, 'internal error');
     });
   };
 }
 
-async function serve(req, res, root, wasmDir) {
+async function serve(req, res, root, wasmDir, appDir) {
   if (req.method !== 'GET' && req.method !== 'HEAD') {
     sendText(res, 405, 'method not allowed', { Allow: 'GET, HEAD' });
     return;
@@ -137,8 +141,10 @@ async function serve(req, res, root, wasmDir) {
     return;
   }
   if (urlPath === '/') {
-    res.writeHead(302, { Location: '/web/', 'Content-Type': 'text/plain; charset=utf-8' });
-    res.end('see /web/\n');
+    // The production build when there is one (scripts/build-web.mjs), else the sources.
+    const home = fs.existsSync(path.join(appDir, 'index.html')) ? '/app/' : '/web/';
+    res.writeHead(302, { Location: home, 'Content-Type': 'text/plain; charset=utf-8' });
+    res.end(`see ${home}\n`);
     return;
   }
   // Reject NUL and ".." segments outright (also when encoded), before any normalisation.
@@ -146,7 +152,7 @@ async function serve(req, res, root, wasmDir) {
     sendText(res, 403, 'forbidden');
     return;
   }
-  const mapped = mapPath(urlPath, root, wasmDir);
+  const mapped = mapPath(urlPath, root, wasmDir, appDir);
   let found = mapped && (await inside(mapped.base, path.join(mapped.base, ...mapped.rest)));
   if (found?.st.isDirectory() && mapped.dirs) {
     // Directories need a trailing slash so relative URLs in index.html resolve.
@@ -161,19 +167,30 @@ async function serve(req, res, root, wasmDir) {
     sendText(res, 404, `not found: ${urlPath}`);
     return;
   }
-  const type = MIME[path.extname(found.real).toLowerCase()] || 'application/octet-stream';
+  const ext = path.extname(found.real).toLowerCase();
+  const body = await encodedBody(req, found.real, found.st, ext);
+  // Revalidated on every load (no-cache) but cheaply: an unchanged file is a 304. One tag per
+  // encoding, as the response varies by it.
+  const etag = `"${found.st.size.toString(36)}-${Math.floor(found.st.mtimeMs).toString(36)}${body.encoding ? `-${body.encoding}` : ''}"`;
+  if (req.headers['if-none-match'] === etag) {
+    res.writeHead(304, { ETag: etag, 'Cache-Control': 'no-cache', Vary: 'Accept-Encoding' });
+    res.end();
+    return;
+  }
   res.writeHead(200, {
-    'Content-Type': type,
-    'Content-Length': found.st.size,
-    // Development server: always serve the freshly built wasm and sources.
+    'Content-Type': MIME[ext] || 'application/octet-stream',
+    'Content-Length': body.size,
+    ...(body.encoding ? { 'Content-Encoding': body.encoding } : {}),
+    Vary: 'Accept-Encoding',
+    ETag: etag,
     'Cache-Control': 'no-cache',
   });
-  if (req.method === 'HEAD' || found.st.size === 0) {
+  if (req.method === 'HEAD' || body.size === 0) {
     res.end();
     return;
   }
   // No more than Content-Length, even when the file grows while it is read (an editor saving).
-  const stream = fs.createReadStream(found.real, { start: 0, end: found.st.size - 1 });
+  const stream = body.open();
   stream.on('error', () => res.destroy());
   stream.pipe(res);
 }
@@ -187,10 +204,11 @@ export function startServer({
   host = '127.0.0.1',
   root = REPO_ROOT,
   wasmDir = process.env.PDESURF_WASM_DIR || path.join(root, 'build', 'wasm'),
+  appDir = process.env.PDESURF_APP_DIR || path.join(root, 'build', 'web'),
 } = {}) {
   const rootAbs = path.resolve(root);
   const wasmAbs = path.resolve(wasmDir);
-  const server = http.createServer(handler(rootAbs, wasmAbs));
+  const server = http.createServer(handler(rootAbs, wasmAbs, path.resolve(appDir)));
   return new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, host, () => {

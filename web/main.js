@@ -46,6 +46,16 @@ function fail(err) {
 }
 
 async function start() {
+  // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
+  // Started first, so the module loads while the view and the examples do.
+  let applyResult = () => {};
+  let applyFailure = () => {};
+  const solver = createSolverClient({
+    onResult: (result, job, ms) => applyResult(result, job, ms),
+    onError: (err, job) => applyFailure(err, job),
+    onBusy: (ms) => status.busy(ms),
+  });
+  hooks.solverRestarts = () => solver.restarts;
   try {
     viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers);
   } catch (err) {
@@ -59,13 +69,6 @@ async function start() {
     fail(err);
     return;
   }
-  // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
-  const solver = createSolverClient({
-    onResult: (result, job, ms) => applyResult(result, job, ms),
-    onError: (err, job) => applyFailure(err, job),
-    onBusy: (ms) => status.busy(ms),
-  });
-  hooks.solverRestarts = () => solver.restarts;
   let sceneToken = 0; // a new scene (example or link): results for an older one are dropped
 
   const state = createSceneState();
@@ -228,7 +231,7 @@ async function start() {
     solver.request({ scene: text, grid, options: { ...grid, ...analysis.solveOptions() }, edited, token: sceneToken });
   }
 
-  function applyFailure(err, job) {
+  applyFailure = (err, job) => {
     hooks.solveCount++;
     if (linkPending) {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
@@ -239,9 +242,9 @@ async function start() {
     }
     fail(err);
     panel.showSolveError(err && err.message ? err.message : String(err));
-  }
+  };
 
-  function applyResult(result, job, ms) {
+  applyResult = (result, job, ms) => {
     hooks.solveCount++;
     // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
     const topology = gridTopology(job.grid.nu, job.grid.nv);
@@ -259,6 +262,7 @@ async function start() {
     fitPending = false;
     panel.showSolved(result.patches);
     hooks.lastError = null;
+    if (!hooks.ready) hooks.readyAt = performance.now(); // first surface, from navigation start
     hooks.ready = true;
     const { nu, nv } = job.grid;
     const n = result.patches.length;
@@ -268,7 +272,7 @@ async function start() {
     else status.info(summary);
     notice = null;
     share.solved(job.scene, job.grid, summary, job.edited);
-  }
+  };
 
   // A link pasted into the address bar or history navigation opens what it names;
   // the page's own writes (replaceState fires no hashchange anyway) never re-open.

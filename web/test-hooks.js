@@ -19,6 +19,7 @@ export function checksumOf(arrays) {
 export function installTestHooks(getPositionArrays, getCamera = () => null, extras = {}) {
   const hooks = {
     ready: false, // true once the first mesh is drawn
+    readyAt: null, // performance.now() then: the cold start
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve
     exampleId: null, // null while a scene from a shared link is open

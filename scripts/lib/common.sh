@@ -52,3 +52,8 @@ build_wasm() {
     -DEigen3_DIR=/usr/share/eigen3/cmake -DCMAKE_CROSSCOMPILING_EMULATOR="$(command -v node)" >/dev/null
   cmake --build "$BUILD/wasm" -j"$(nproc)"
 }
+
+build_web() {
+  log "web bundle ($BUILD/web)"
+  node "$ROOT/scripts/build-web.mjs" --out "$BUILD/web" --wasm-dir "$BUILD/wasm"
+}

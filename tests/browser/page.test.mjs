@@ -8,7 +8,9 @@
 //   node --test tests/browser/
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { skip, startHarness, exampleIndex, hooks, solvedAfter, shoot, viewStats, sameChecksum } from './harness.mjs';
+import fs from 'node:fs';
+import path from 'node:path';
+import { skip, startHarness, exampleIndex, hooks, solvedAfter, shoot, viewStats, sameChecksum, REPO } from './harness.mjs';
 
 describe('modeller page', { skip }, () => {
   let h, page;
@@ -27,7 +29,9 @@ describe('modeller page', { skip }, () => {
     assert.equal(drawn.ready, true);
     assert.equal(drawn.exampleId, index[0].id);
     assert.ok(drawn.vertexCount > 0 && Number.isFinite(drawn.checksum) && drawn.checksum > 0);
-    assert.equal(new URL(page.url()).pathname, '/web/');
+    // The production build when scripts/build-web.mjs made one (scripts/test does), else the sources.
+    const built = fs.existsSync(path.join(REPO, 'build', 'web', 'index.html'));
+    assert.equal(new URL(page.url()).pathname, built ? '/app/' : '/web/');
     assert.equal(new URL(page.url()).hash, `#example=${encodeURIComponent(index[0].id)}`);
 
     const img = await shoot(page, 'modeller.png');

@@ -18,13 +18,16 @@ const DEFAULT_MODULE_URL = '/wasm/pdesurf.js';
  * Load the wasm module and return { solve(scene, {nu, nv}), module }.
  * Browser: imports /wasm/pdesurf.js (the module finds pdesurf.wasm beside itself).
  * Node: pass { moduleUrl, wasmBinary } (node's fetch cannot load a file path).
+ * wasmBinary may be a promise: the worker starts fetching the .wasm while this imports the
+ * module's glue code.
  */
 export async function loadSolver(opts = {}) {
   const moduleUrl = opts.moduleUrl || DEFAULT_MODULE_URL;
-  let factory;
+  let factory, wasmBinary;
   try {
-    const mod = await import(/* @vite-ignore */ moduleUrl);
+    const [mod, binary] = await Promise.all([import(/* @vite-ignore */ moduleUrl), opts.wasmBinary]);
     factory = mod.default;
+    wasmBinary = binary;
   } catch (err) {
     throw new PdesurfError('Load', `cannot load the solver module ${moduleUrl}: ${err.message}`);
   }
@@ -32,7 +35,7 @@ export async function loadSolver(opts = {}) {
     throw new PdesurfError('Load', `${moduleUrl} has no default factory export`);
   }
   const moduleArgs = {};
-  if (opts.wasmBinary) moduleArgs.wasmBinary = opts.wasmBinary;
+  if (wasmBinary) moduleArgs.wasmBinary = wasmBinary;
   if (opts.locateFile) moduleArgs.locateFile = opts.locateFile;
   // Keep emscripten's stdout/stderr out of the console unless asked for.
   moduleArgs.print = opts.print || (() => {});

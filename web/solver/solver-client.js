@@ -25,9 +25,13 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let busyTimer = 0;
   let cancelTimer = 0;
   const client = { restarts: 0 };
+  spawn(); // now: the module loads while the page sets up
 
   function spawn() {
-    worker = new Worker(workerUrl, { type: 'module' });
+    // The worker web/boot.js started while the page loaded, once, unless it failed.
+    const early = globalThis.__pdesurfEarlyWorker;
+    globalThis.__pdesurfEarlyWorker = undefined;
+    worker = early && !early.failed ? early : new Worker(workerUrl, { type: 'module' });
     worker.onmessage = (e) => finished(e.data);
     // A worker that fails to load (or crashes) fails its request; the next one respawns it.
     worker.onerror = (e) => {

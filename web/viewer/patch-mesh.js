@@ -25,6 +25,18 @@ const materials = {
   primary: makeMaterial(PRIMARY_COLOR),
 };
 
+/**
+ * A stand-in mesh per patch material, for compiling their shaders while the first solve
+ * runs (compiling is the costliest part of the first frame). Same attributes as a patch.
+ */
+export function shaderWarmUpMeshes() {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(9), 3));
+  g.setAttribute('normal', new THREE.BufferAttribute(Float32Array.of(0, 0, 1, 0, 0, 1, 0, 0, 1), 3));
+  g.setAttribute('uv', new THREE.BufferAttribute(new Float32Array(6), 2));
+  return Object.values(materials).map((m) => new THREE.Mesh(g, m));
+}
+
 /** BufferGeometry from { positions, normals, uvs, indices }. */
 export function geometryFromPatch(patch) {
   const g = new THREE.BufferGeometry();

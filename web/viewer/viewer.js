@@ -3,7 +3,7 @@
 // Renders on demand (after a change or a camera move) to keep idle CPU at zero.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { meshFromPatch, updateMeshFromPatch, fitsMesh } from './patch-mesh.js';
+import { meshFromPatch, updateMeshFromPatch, fitsMesh, shaderWarmUpMeshes } from './patch-mesh.js';
 import { fitCameraToObject } from './fit-camera.js';
 import { createBezierLayer } from './bezier-layer.js';
 import { createControlPointEditor } from './control-point-editor.js';
@@ -65,6 +65,13 @@ export function createViewer(container, bezierEditing) {
   }
   new ResizeObserver(resize).observe(container);
   resize();
+
+  // Compile the patch materials' shaders now, while the first solve runs in the worker,
+  // instead of in the first frame that shows a surface.
+  const warmUp = new THREE.Group();
+  warmUp.add(...shaderWarmUpMeshes());
+  scene.add(warmUp);
+  renderer.compileAsync(scene, camera).catch(() => {}).finally(() => scene.remove(warmUp));
 
   return {
     renderer,

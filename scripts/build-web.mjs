@@ -1,0 +1,69 @@
+#!/usr/bin/env node
+// The production page: web/ bundled and minified by esbuild (three.js tree-shaken) into
+// build/web/ (served as /app/), the wasm module's files beside their build, and every text
+// or wasm file precompressed (FILE.br, FILE.gz) for the static server. The sources in web/
+// stay runnable as they are (/web/, no build step).
+//   node scripts/build-web.mjs [--wasm-dir build/wasm] [--out build/web]
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import * as esbuild from 'esbuild';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? path.resolve(process.argv[i + 1]) : fallback;
+};
+const OUT = arg('--out', path.join(ROOT, 'build', 'web'));
+const WASM = arg('--wasm-dir', process.env.PDESURF_WASM_DIR || path.join(ROOT, 'build', 'wasm'));
+
+fs.rmSync(OUT, { recursive: true, force: true });
+fs.mkdirSync(OUT, { recursive: true });
+
+// Two bundles: the page, and the solver worker it starts (new URL('./solver-worker.js',
+// import.meta.url) resolves beside the page's bundle). The wasm glue (/wasm/pdesurf.js) is
+// imported at run time and stays a file of its own.
+const result = await esbuild.build({
+  entryPoints: { main: path.join(ROOT, 'web', 'main.js'), 'solver-worker': path.join(ROOT, 'web', 'solver', 'solver-worker.js') },
+  outdir: OUT,
+  bundle: true,
+  format: 'esm',
+  minify: true,
+  target: 'es2022',
+  legalComments: 'linked',
+  metafile: true,
+  logLevel: 'warning',
+});
+
+// The page: no importmap (everything is bundled), the examples index fetched while the
+// scripts load.
+let html = fs.readFileSync(path.join(ROOT, 'web', 'index.html'), 'utf8');
+html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/, '\n  <link rel="preload" href="/examples/index.json" as="fetch" crossorigin>');
+if (html.includes('importmap')) throw new Error('build-web: could not take the importmap out of web/index.html');
+html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
+if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');
+fs.writeFileSync(path.join(OUT, 'index.html'), html);
+for (const f of ['style.css', 'load-check.js', 'boot.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
+
+// Precompressed siblings: brotli at its best (built once), gzip for clients without it.
+const compress = (file) => {
+  const bytes = fs.readFileSync(file);
+  fs.writeFileSync(`${file}.br`, zlib.brotliCompressSync(bytes, { params: { [zlib.constants.BROTLI_PARAM_QUALITY]: 11, [zlib.constants.BROTLI_PARAM_SIZE_HINT]: bytes.length } }));
+  fs.writeFileSync(`${file}.gz`, zlib.gzipSync(bytes, { level: 9 }));
+  return { file: path.relative(ROOT, file), raw: bytes.length, br: fs.statSync(`${file}.br`).size };
+};
+const sizes = [];
+for (const f of fs.readdirSync(OUT)) if (/\.(js|css|html)$/.test(f)) sizes.push(compress(path.join(OUT, f)));
+for (const f of ['pdesurf.js', 'pdesurf.wasm']) {
+  const file = path.join(WASM, f);
+  if (fs.existsSync(file)) sizes.push(compress(file));
+  else console.warn(`build-web: ${file} is missing (build the wasm module first)`);
+}
+let raw = 0, br = 0;
+for (const s of sizes) {
+  raw += s.raw;
+  br += s.br;
+}
+console.log(`build-web: ${path.relative(ROOT, OUT)}/ written; ${sizes.length} files, ${(raw / 1024).toFixed(0)} KiB, ${(br / 1024).toFixed(0)} KiB brotli` +
+  ` (${Object.keys(result.metafile.outputs).length} bundle outputs)`);

@@ -1,0 +1,18 @@
+// Starts the solver worker as soon as the page is parsed, before the page's modules have
+// loaded and run (the worker then loads the wasm module in parallel with them);
+// solver/solver-client.js adopts it. data-worker: the worker's URL, relative to the page
+// (the production build points it at its bundle). A file, not inline: the CSP allows no
+// inline script.
+(() => {
+  const script = document.currentScript;
+  try {
+    const worker = new Worker(new URL(script.dataset.worker, location.href), { type: 'module' });
+    worker.onerror = (e) => {
+      e.preventDefault();
+      worker.failed = true; // the client starts a fresh one
+    };
+    window.__pdesurfEarlyWorker = worker;
+  } catch {
+    // The client starts its own.
+  }
+})();
