@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "cli.hpp"
+#include "mesh_writers.hpp"
 
 namespace pdesurf::cli {
 
@@ -10,7 +11,8 @@ const char* kUsage =
     "usage:\n"
     "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV] [--method M]   print u,v,x,y,z on the grid\n"
     "  pdesurf sample SCENE.json --control-net [--patch NAME]                 print a Bezier patch's solved control points\n"
-    "  pdesurf export SCENE.json -o FILE.obj [--grid NUxNV]                   write every patch as OBJ\n"
+    "  pdesurf export SCENE.json -o FILE [--format F] [--grid NUxNV]          write every patch to FILE, F: obj (text),\n"
+    "      stl, ply (binary) or glb (glTF 2.0 binary); default: FILE's extension, else obj\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
     "  pdesurf check SCENE.json [--json] [--grid NxN]                         join certificate (G0/G1/G2, folds) and\n"
@@ -54,12 +56,14 @@ Options parseArgs(const std::vector<std::string>& args) {
     else if (a == "--json") o.json = true;
     else if (a == "--control-net") o.controlNet = true;
     else if (a == "-o" || a == "--output") o.output = value();
+    else if (a == "--format") o.format = value(), parseMeshFormat(o.format);  // refused here, before any work
     else if (!a.empty() && a[0] == '-' && o.command != "decode-link") throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;
     else throw std::runtime_error("unexpected argument '" + a + "'");
   }
   if (o.scenePath.empty()) throw std::runtime_error(o.command == "decode-link" ? "missing the link" : "missing SCENE.json");
-  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE.obj");
+  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply or .glb)");
+  if (o.command != "export" && !o.format.empty()) throw std::runtime_error("--format applies to export only");
   return o;
 }
 

@@ -7,7 +7,7 @@
 namespace pdesurf::cli {
 
 struct Options {
-  std::string command, scenePath, patch, output, method;
+  std::string command, scenePath, patch, output, method, format;
   int nu = 16, nv = 16;
   bool gridGiven = false, json = false, controlNet = false;
 };
