@@ -58,7 +58,9 @@ void buildGridData(int nu, int nv, Mesh& m) {
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       const uint32_t a = j * (nu + 1) + i, b = a + (nu + 1), c = b + 1, d = a + 1;
-      out[0] = a, out[1] = b, out[2] = d, out[3] = b, out[4] = c, out[5] = d;
+      // Counter-clockwise seen from where X_u × X_v points: each face agrees with its
+      // vertex normals (exports, back-face culling and two-sided lighting rely on it).
+      out[0] = a, out[1] = d, out[2] = b, out[3] = b, out[4] = d, out[5] = c;
       out += 6;
     }
 }

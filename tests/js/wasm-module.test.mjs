@@ -16,7 +16,7 @@ const solver = await loadSolver({
 const index = JSON.parse(readFileSync(new URL('examples/index.json', root), 'utf8'));
 const sceneText = (file) => readFileSync(new URL(`examples/${file}`, root), 'utf8');
 
-test('every example solves with the ParametricGeometry layout', () => {
+test('every example solves with the ParametricGeometry vertex layout, faces wound about their normals', () => {
   for (const { id, file } of index.examples) {
     const nu = 12, nv = 20, V = (nu + 1) * (nv + 1);
     const { patches } = solver.solve(sceneText(file), { nu, nv });
@@ -32,10 +32,11 @@ test('every example solves with the ParametricGeometry layout', () => {
         const n = Math.hypot(p.normals[3 * k], p.normals[3 * k + 1], p.normals[3 * k + 2]);
         assert.ok(Math.abs(n - 1) < 1e-5, `${id}/${p.name} unit normal at ${k}`);
       }
-      // Vertex (i, j) at j*(nu+1)+i with uv (i/nu, j/nv); first cell's triangles as in three.js.
+      // Vertex (i, j) at j*(nu+1)+i with uv (i/nu, j/nv), as in three.js; the first cell's
+      // triangles counter-clockwise about X_u × X_v (three.js winds them the other way).
       assert.equal(p.uvs[2 * (nu + 1) * 3 + 2 * 5], Math.fround(5 / nu));
       assert.equal(p.uvs[2 * (nu + 1) * 3 + 2 * 5 + 1], Math.fround(3 / nv));
-      assert.deepEqual(Array.from(p.indices.slice(0, 6)), [0, nu + 1, 1, nu + 1, nu + 2, 1]);
+      assert.deepEqual(Array.from(p.indices.slice(0, 6)), [0, 1, nu + 1, nu + 1, 1, nu + 2]);
     }
   }
 });

@@ -20,7 +20,7 @@ export function gridTopology(nu, nv) {
   for (let j = 0; j < nv; j++)
     for (let i = 0; i < nu; i++) {
       const a = j * (nu + 1) + i, b = a + nu + 1, c = b + 1, d = a + 1;
-      indices[t++] = a, indices[t++] = b, indices[t++] = d, indices[t++] = b, indices[t++] = c, indices[t++] = d;
+      indices[t++] = a, indices[t++] = d, indices[t++] = b, indices[t++] = b, indices[t++] = d, indices[t++] = c;
     }
   last = { nu, nv, uvs, indices };
   return last;
