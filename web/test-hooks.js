@@ -20,6 +20,7 @@ export function installTestHooks(getPositionArrays, getCamera = () => null, extr
   const hooks = {
     ready: false, // true once the first mesh is drawn
     readyAt: null, // performance.now() then: the cold start
+    lastSolve: null, // { pageMs, workerMs, nu, nv } of the latest drawn solve
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve
     exampleId: null, // null while a scene from a shared link is open

@@ -1,0 +1,55 @@
+#!/usr/bin/env node
+// Benchmark (not a test) of the page in headless Chromium: the cold start of the production
+// page (navigation to the first surface, cache cleared, median of 5) with the bytes it moves,
+// and the page path of a re-solve (slider edit to drawn: worker solve, transfer, in-place
+// attribute update, render) against the worker's own solve time, at 64², 256² and 1024².
+// Run by scripts/bench after the builds; needs build/web (scripts/build-web.mjs).
+import { startHarness } from '../tests/browser/harness.mjs';
+
+const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
+async function coldStart(h, url) {
+  const page = await h.context.newPage();
+  const cdp = await h.context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  await cdp.send('Network.clearBrowserCache'); // the worker's requests share this cache
+  await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
+  await page.goto(url);
+  await page.waitForFunction(() => window.__pdesurf?.ready, null, { timeout: 30_000 });
+  // Bytes of everything fetched, the worker's too (its entries are not in the page's timeline).
+  const ms = await page.evaluate(() => window.__pdesurf.readyAt);
+  await page.close();
+  return ms;
+}
+
+async function pagePath(page, n, runs = n > 512 ? 5 : 9) {
+  await page.evaluate(([nu, nv]) => window.__pdesurf.requestGrid(nu, nv), [n, n]);
+  await page.waitForFunction((k) => window.__pdesurf.lastSolve?.nu === k, n, { timeout: 60_000 });
+  const input = page.locator('#panel [data-param="h1"] input').first();
+  const base = Number(await input.inputValue({ timeout: 120_000 }));
+  const out = [];
+  for (let k = 0; k < runs; k++) {
+    const before = await page.evaluate(() => window.__pdesurf.solveCount);
+    await input.fill(String(base + 0.01 * (k % 2)), { timeout: 120_000 });
+    await page.waitForFunction((c) => window.__pdesurf.solveCount > c, before, { timeout: 60_000 });
+    out.push(await page.evaluate(() => window.__pdesurf.lastSolve));
+  }
+  return { page: median(out.map((s) => s.pageMs)), worker: median(out.map((s) => s.workerMs)) };
+}
+
+const h = await startHarness();
+try {
+  const colds = [];
+  for (let k = 0; k < 5; k++) colds.push(await coldStart(h, `${h.base}/app/#example=you2004-fig2a`));
+  console.log(`page (headless Chromium, SwiftShader): cold start of /app/ to the first surface, median of 5: ${median(colds).toFixed(0)} ms` +
+    ` (${colds.map((x) => x.toFixed(0)).join(', ')})`);
+  const page = await h.open('/app/#example=you2004-fig4a');
+  console.log('\nre-solve of you2004-fig4a (3 patches), slider edit to drawn [ms, median of 9; 5 at 1024²]');
+  console.log(`${'grid'.padEnd(10)} ${'page path'.padStart(10)} ${'worker'.padStart(10)} ${'ratio'.padStart(8)}`);
+  for (const n of [64, 256, 1024]) {
+    const r = await pagePath(page, n);
+    console.log(`${`${n}x${n}`.padEnd(10)} ${r.page.toFixed(1).padStart(10)} ${r.worker.toFixed(1).padStart(10)} ${(r.page / r.worker).toFixed(2).padStart(8)}`);
+  }
+} finally {
+  await h.close();
+}
