@@ -3,15 +3,18 @@
 // Built natively and as wasm for node; run both with scripts/bench.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "analysis/join_certificate.hpp"
+#include "bezier/bezier_assembly.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
 #include "ode/basis_cache.hpp"
@@ -50,6 +53,34 @@ double medianSeconds(const std::function<void()>& f) {
 }
 
 volatile size_t sink;
+
+// A pts×pts control net over the unit square with a wavy height, λ 10, γ 1.
+BezierProblem benchBezierNet(int pts, BezierEnergy energy) {
+  BezierProblem p;
+  p.n = p.m = pts - 1;
+  p.energy = energy;
+  p.lambda = 10, p.gamma = 1;
+  for (int i = 0; i < pts; ++i)
+    for (int j = 0; j < pts; ++j) {
+      const double x = static_cast<double>(i) / (pts - 1), y = static_cast<double>(j) / (pts - 1);
+      p.initial.emplace_back(x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y));
+    }
+  return p;
+}
+
+// Seconds per solve from scratch (BezierSolver built, factored and solved), and per solve
+// reusing one factorisation (BezierSolver::solve after a drag of the middle control point).
+std::pair<double, double> fullAndReused(const BezierProblem& p) {
+  const double full = medianSeconds([&] { sink = solveBezier(p).size(); });
+  const BezierSolver solver(p);
+  ControlNet dragged = p.initial;
+  const int mid = (p.n / 2) * (p.m + 1) + p.m / 2;
+  const double reused = medianSeconds([&] {
+    dragged[mid].z() += 1e-3;
+    sink = solver.solve(dragged).size();
+  });
+  return {full, reused};
+}
 
 }  // namespace
 
@@ -103,28 +134,32 @@ int main() {
   std::printf("(solve times of the blend in microseconds, median)\n");
 
   // Seed 002: one solve from scratch (assemble, factor, solve) against a solve that reuses the
-  // factorisation (a drag of the initial surface's control points).
+  // factorisation (a drag of the initial surface's control points). 17x17 is degree 16, the cap.
   std::printf("\nvariational Bezier surfaces (membrane, continuous normals of degree 3, lambda 10, gamma 1)\n");
   std::printf("%-10s %16s %16s %10s\n", "net", "assemble+solve [ms]", "reused [ms]", "gain");
-  for (int pts : {5, 8, 16}) {
-    BezierProblem p;
-    p.n = p.m = pts - 1;
-    p.lambda = 10, p.gamma = 1;
-    for (int i = 0; i < pts; ++i)
-      for (int j = 0; j < pts; ++j) {
-        const double x = static_cast<double>(i) / (pts - 1), y = static_cast<double>(j) / (pts - 1);
-        p.initial.emplace_back(x, y, 0.3 * std::sin(3 * x) * std::cos(2 * y));
-      }
+  for (int pts : {5, 8, 16, 17}) {
+    BezierProblem p = benchBezierNet(pts, BezierEnergy::Membrane);
     p.normals.n1 = p.normals.m1 = 3;
     for (int k = 0; k < 16; ++k) p.normals.vectors.emplace_back(0.1 * (k % 4), 0.1 * (k / 4), 1.0);
-    const double full = medianSeconds([&] { sink = solveBezier(p).size(); });
-    const BezierSolver solver(p);
-    ControlNet dragged = p.initial;
-    const double reused = medianSeconds([&] {
-      dragged[(pts / 2) * pts + pts / 2].z() += 1e-3;
-      sink = solver.solve(dragged).size();
-    });
+    const auto [full, reused] = fullAndReused(p);
     std::printf("%2dx%-7d %16.3f %16.3f %9.0fx\n", pts, pts, full * 1e3, reused * 1e3, full / reused);
+  }
+  // A discrete field at degree 16: the assembly runs over every sample (tensor-product Gram
+  // matrices, docs/bezier.md); "assembly" is assembleBezierForms alone.
+  std::printf("\nvariational Bezier surfaces (thin plate, degree 16, discrete normals, lambda 10, gamma 1)\n");
+  std::printf("%-10s %14s %20s %14s %10s\n", "field", "assembly [ms]", "assemble+solve [ms]", "reused [ms]", "gain");
+  for (int grid : {32, 256}) {
+    BezierProblem p = benchBezierNet(17, BezierEnergy::ThinPlate);
+    BezierNormalField& f = p.normals;
+    f.discrete = true, f.np = f.mp = grid;
+    for (int i = 0; i <= grid; ++i)
+      for (int j = 0; j <= grid; ++j) {
+        const double u = static_cast<double>(i) / grid, v = static_cast<double>(j) / grid;
+        f.vectors.emplace_back(-0.9 * std::cos(3 * u) * std::cos(2 * v), 0.6 * std::sin(3 * u) * std::sin(2 * v), 1.0);  // S's normals
+      }
+    const double assembly = medianSeconds([&] { sink = assembleBezierForms(p).normal.size(); });
+    const auto [full, reused] = fullAndReused(p);
+    std::printf("%4dx%-5d %14.3f %20.3f %14.3f %9.0fx\n", grid, grid, assembly * 1e3, full * 1e3, reused * 1e3, full / reused);
   }
 
   const Scene scene = parseScene(readText(dir + "/you2004-fig4a.json"));

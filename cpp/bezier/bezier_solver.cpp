@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
-#include "bezier/bernstein.hpp"
+#include "bezier/bezier_assembly.hpp"
 #include "common/errors.hpp"
 
 namespace pdesurf {
@@ -13,49 +14,11 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-// Rows: evaluation points; columns: control points (i, j) -> i*(m+1)+j. Entries
-// ∂^{du+dv}/∂u^du ∂v^dv (B_i^n(u) B_j^m(v)).
-MatrixXd basisRows(int n, int m, const std::vector<double>& us, const std::vector<double>& vs, int du, int dv) {
-  MatrixXd A(us.size(), (n + 1) * (m + 1));
-  for (size_t q = 0; q < us.size(); ++q) {
-    const auto bu = bernstein(n, us[q], du), bv = bernstein(m, vs[q], dv);
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= m; ++j) A(q, i * (m + 1) + j) = bu[i] * bv[j];
-  }
-  return A;
-}
-
-// Tensor quadrature nodes: continuous (Gauss) or the discrete sample grid, with weights.
-struct Points {
-  std::vector<double> u, v, w;
-};
-
-Points gaussGrid(int qu, int qv) {
-  const GaussRule a = gaussLegendre(qu), b = gaussLegendre(qv);
-  Points p;
-  for (int i = 0; i < qu; ++i)
-    for (int j = 0; j < qv; ++j) p.u.push_back(a.x[i]), p.v.push_back(b.x[j]), p.w.push_back(a.w[i] * b.w[j]);
-  return p;
-}
-
-// The discrete normal field's sample grid with trapezoidal weights (½ on edges, ¼ at corners).
-Points trapezoidGrid(int np, int mp) {
-  Points p;
-  for (int i = 0; i <= np; ++i)
-    for (int j = 0; j <= mp; ++j) {
-      const double wi = (i == 0 || i == np) ? 0.5 : 1.0, wj = (j == 0 || j == mp) ? 0.5 : 1.0;
-      p.u.push_back(static_cast<double>(i) / np), p.v.push_back(static_cast<double>(j) / mp), p.w.push_back(wi * wj / (np * mp));
-    }
-  return p;
-}
-
-// Σ_q w_q a_q a_qᵀ for the rows a_q of A.
-MatrixXd gram(const MatrixXd& A, const VectorXd& w) { return A.transpose() * w.asDiagonal() * A; }
-
+// Q(3k + c, 3l + c) += scale S(k, l) for c = 0, 1, 2 (column by column: Eigen is column-major).
 void addBlockDiagonal(MatrixXd& Q, const MatrixXd& S, double scale) {
-  for (int k = 0; k < S.rows(); ++k)
-    for (int l = 0; l < S.cols(); ++l)
-      for (int c = 0; c < 3; ++c) Q(3 * k + c, 3 * l + c) += scale * S(k, l);
+  for (int l = 0; l < S.cols(); ++l)
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < S.rows(); ++k) Q(3 * k + c, 3 * l + c) += scale * S(k, l);
 }
 
 void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
@@ -98,59 +61,16 @@ void validateBezierProblem(const BezierProblem& p) {
 BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   validateBezierProblem(shape_);
   const int n = shape_.n, m = shape_.m, K = (n + 1) * (m + 1);
-  const BezierNormalField& f = shape_.normals;
-  const bool thin = shape_.energy == BezierEnergy::ThinPlate;
-
-  // Where the energy is evaluated. Fairness: always the exact integral (Gauss nodes). The
-  // normal and data terms: the exact integral for a continuous field, or, for a discrete one,
-  // the samples with trapezoidal weights (summing to 1, like the integral) times the
-  // per-sample weights. Seed 002's Eq. 5 sums every term, fairness included, with unit
-  // weights; that biased sum pins the surface only loosely (a flat square comes back with
-  // its control net 2.4 off the grid), so pdesurf keeps the fairness exact.
-  const Points fair = gaussGrid(n + 1, m + 1);
-  const Points nrm = f.discrete ? trapezoidGrid(f.np, f.mp) : gaussGrid(n + f.n1, m + f.m1);
-  const VectorXd wFair = Eigen::Map<const VectorXd>(fair.w.data(), fair.w.size());
-
-  MatrixXd F;  // fairness, K×K
-  if (thin) {
-    F = gram(basisRows(n, m, fair.u, fair.v, 2, 0), wFair) + 2 * gram(basisRows(n, m, fair.u, fair.v, 1, 1), wFair) +
-        gram(basisRows(n, m, fair.u, fair.v, 0, 2), wFair);
-  } else {
-    F = gram(basisRows(n, m, fair.u, fair.v, 1, 0), wFair) + gram(basisRows(n, m, fair.u, fair.v, 0, 1), wFair);
-  }
-  // Data term γ|R - S|²: where the normal term is evaluated (exact Gauss nodes for a continuous
-  // field: degree 2n ≤ 2(n + n1) - 1), with the per-sample γ weights for a discrete one.
-  VectorXd wMass = Eigen::Map<const VectorXd>(nrm.w.data(), nrm.w.size());
-  if (f.discrete && !f.gammaWeight.empty())
-    for (int q = 0; q < wMass.size(); ++q) wMass(q) *= f.gammaWeight[q];
-  const MatrixXd mass = gram(basisRows(n, m, nrm.u, nrm.v, 0, 0), wMass);
-
-  // Normal term with λ = 1: Σ_q w_q N_c N_d (a_u a_uᵀ + a_v a_vᵀ) per coordinate pair (c, d).
-  const MatrixXd Au = basisRows(n, m, nrm.u, nrm.v, 1, 0), Av = basisRows(n, m, nrm.u, nrm.v, 0, 1);
-  std::vector<Eigen::Vector3d> N(nrm.u.size());
-  for (size_t q = 0; q < nrm.u.size(); ++q) {
-    if (f.discrete) {
-      N[q] = f.vectors[q].normalized();
-      if (!f.lambdaWeight.empty()) N[q] *= std::sqrt(f.lambdaWeight[q]);
-    } else {
-      const auto bu = bernstein(f.n1, nrm.u[q]), bv = bernstein(f.m1, nrm.v[q]);
-      N[q].setZero();
-      for (int i = 0; i <= f.n1; ++i)
-        for (int j = 0; j <= f.m1; ++j) N[q] += bu[i] * bv[j] * f.vectors[i * (f.m1 + 1) + j];
-    }
-  }
-  normal_ = MatrixXd::Zero(3 * K, 3 * K);
-  for (int c = 0; c < 3; ++c)
-    for (int d = c; d < 3; ++d) {
-      VectorXd w(nrm.u.size());
-      for (size_t q = 0; q < nrm.u.size(); ++q) w(q) = nrm.w[q] * N[q](c) * N[q](d);
-      const MatrixXd block = gram(Au, w) + gram(Av, w);
-      for (int k = 0; k < K; ++k)
-        for (int l = 0; l < K; ++l) {
-          normal_(3 * k + c, 3 * l + d) = block(k, l);
-          normal_(3 * k + d, 3 * l + c) = block(k, l);
-        }
-    }
+  // Fairness: always the exact integral. The normal and data terms: the exact integral for a
+  // continuous field or, for a discrete one, the samples with trapezoidal weights (summing to
+  // 1, like the integral) times the per-sample weights. Seed 002's Eq. 5 sums every term,
+  // fairness included, with unit weights; that biased sum pins the surface only loosely (a
+  // flat square comes back with its control net 2.4 off the grid), so pdesurf keeps the
+  // fairness exact. The matrices come from the tensor-product assembly (bezier_assembly.hpp).
+  BezierForms forms = assembleBezierForms(shape_);
+  normal_ = std::move(forms.normal);
+  const MatrixXd& F = forms.fairness;
+  const MatrixXd& mass = forms.mass;
 
   Q_ = shape_.lambda * normal_;
   addBlockDiagonal(Q_, F, 1.0);
@@ -165,11 +85,13 @@ BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   MatrixXd Qff(nf, nf);
   Qfx_.resize(nf, nx);
   Gf_.resize(nf, 3 * K);
-  for (int a = 0; a < nf; ++a) {
-    for (int b = 0; b < nf; ++b) Qff(a, b) = Q_(free_[a], free_[b]);
-    for (int b = 0; b < nx; ++b) Qfx_(a, b) = Q_(free_[a], fixed_[b]);
-    Gf_.row(a) = G_.row(free_[a]);
-  }
+  // Gathered column by column (Eigen is column-major).
+  for (int b = 0; b < nf; ++b)
+    for (int a = 0; a < nf; ++a) Qff(a, b) = Q_(free_[a], free_[b]);
+  for (int b = 0; b < nx; ++b)
+    for (int a = 0; a < nf; ++a) Qfx_(a, b) = Q_(free_[a], fixed_[b]);
+  for (int b = 0; b < 3 * K; ++b)
+    for (int a = 0; a < nf; ++a) Gf_(a, b) = G_(free_[a], b);
   ldlt_.compute(Qff);
   const VectorXd D = ldlt_.vectorD();
   // A singular system shows zero or negative pivots. Positive ones are accepted down to 1e-16 of

@@ -22,9 +22,13 @@ constexpr int kGrid = 2048;  // grid cells per direction, per patch
 // ~240 MB of mesh. The caps above alone would allow 64 × 2048².
 constexpr size_t kSceneVertices = size_t{2049} * 2049;
 constexpr int kBezierDegree = 16;
-// A discrete guiding-normal field's samples (np+1)(mp+1) times the square of the number of
-// control points: the normal term's assembly is about 13 such products (Gram matrices), so
-// this bounds a solve from scratch to about a second natively.
-constexpr size_t kBezierAssembly = size_t{1} << 28;
+// Bezier assembly work over all Bezier patches of a scene. Per patch, on the Nu×Nv nodes of the
+// normal and data terms (a discrete field's (np+1)(mp+1) samples, or a continuous field's
+// (n+n1)(m+m1) Gauss points) with K = (n+1)(m+1) control points: Nu·Nv·(m+1)² + Nu·K², the
+// cost of one tensor-product Gram matrix (bezier/tensor_gram.hpp; the assembly makes ~13).
+// The degree (16) and grid (256²) caps alone keep one patch at or below 40.5 M units (degree
+// 16 with a 256² field: ~0.1 s natively from scratch); the total stops 64 such patches. At the
+// cap, 13 of them: ~1-2 s natively.
+constexpr size_t kBezierAssembly = size_t{1} << 29;
 
 }  // namespace pdesurf::limits

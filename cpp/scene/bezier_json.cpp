@@ -1,6 +1,7 @@
 // The "bezier" patch (seed 002): degree, initial control net, energy, λ, γ and the guiding
 // normal field, continuous (control vectors of its own degree) or discrete (a sample grid of
 // normals, given as vectors or as expressions in u and v, with optional per-sample weights).
+#include "bezier/bezier_assembly.hpp"
 #include "expr/parse.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
@@ -54,9 +55,23 @@ std::vector<double> sampled(const json& j, const std::string& path, const Resolv
   return out;
 }
 
+// Adds this patch's assembly work (bezier_assembly.hpp) to the scene's running total, before
+// the normal field's samples are read; refuses the scene once the total passes the limit.
+void addAssemblyWork(const BezierProblem& b, const std::string& path, size_t& total) {
+  int Nu = 0, Nv = 0;
+  bezierNormalNodes(b.n, b.m, b.normals, Nu, Nv);
+  const size_t work = bezierAssemblyWork(b.n, b.m, Nu, Nv);
+  total += work;
+  if (total > limits::kBezierAssembly)
+    fail(ErrorCode::TooLarge, path,
+         "a normal field on " + std::to_string(Nu) + "x" + std::to_string(Nv) + " nodes at degree " + std::to_string(b.n) + "x" + std::to_string(b.m) +
+             " is " + std::to_string(work) + " units of assembly work; with the Bezier patches before it, " + std::to_string(total) +
+             ", over the limit " + std::to_string(limits::kBezierAssembly) + " per scene (use coarser normal grids, lower degrees or fewer patches)");
+}
+
 }  // namespace
 
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch, size_t& assemblyWork) {
   allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals"});
   BezierProblem& b = patch.bezier;
   const std::string energy = stringField(require(j, "energy", path), path + ".energy");
@@ -76,6 +91,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
     allowOnly(nj, np, {"degree", "vectors"});
     const auto d = pair(nj["degree"], np + ".degree", 0, 24);
     f.n1 = d[0], f.m1 = d[1];
+    addAssemblyWork(b, np + ".degree", assemblyWork);
     f.vectors = points(require(nj, "vectors", np), np + ".vectors", r, static_cast<size_t>(f.n1 + 1) * (f.m1 + 1));
   } else {
     allowOnly(nj, np, {"grid", "vectors", "field", "lambda_weights", "gamma_weights"});
@@ -83,11 +99,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
     const auto g = pair(require(nj, "grid", np), np + ".grid", 1, 256);
     f.np = g[0], f.mp = g[1];
     const size_t count = static_cast<size_t>(f.np + 1) * (f.mp + 1);
-    const size_t K = static_cast<size_t>(b.n + 1) * (b.m + 1);
-    if (count * K * K > limits::kBezierAssembly)
-      fail(ErrorCode::TooLarge, np + ".grid", std::to_string(count) + " samples for " + std::to_string(K) + " control points are " +
-                                               std::to_string(count * K * K) + " units of assembly work, over the limit " +
-                                               std::to_string(limits::kBezierAssembly) + " (use a coarser grid or a lower degree)");
+    addAssemblyWork(b, np + ".grid", assemblyWork);
     if (nj.contains("vectors") == nj.contains("field")) fail(ErrorCode::InvalidField, np, "give either \"vectors\" or \"field\"");
     if (nj.contains("vectors")) {
       f.vectors = points(nj["vectors"], np + ".vectors", r, count);

@@ -15,7 +15,8 @@ namespace pdesurf {
 using namespace scene_json;
 
 // In scene/bezier_json.cpp.
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch);
+// Adds the patch's assembly work to assemblyWork, the scene's total (limits::kBezierAssembly).
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch, size_t& assemblyWork);
 // In scene/pde_json.cpp.
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
@@ -178,6 +179,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (!patches.is_array() || patches.empty()) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array");
   if (patches.size() > limits::kPatches) fail(ErrorCode::TooLarge, "patches", "more than " + std::to_string(limits::kPatches) + " patches");
   std::set<std::string> names;
+  size_t assemblyWork = 0;  // over the Bezier patches so far
   for (size_t i = 0; i < patches.size(); ++i) {
     const std::string path = "patches[" + std::to_string(i) + "]";
     const json& pj = patches[i];
@@ -200,7 +202,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     } else if (kind == "bezier" && scene.version >= 2) {
       patch.kind = PatchKind::Bezier;
       try {
-        parseBezierPatch(pj, path, r, patch);
+        parseBezierPatch(pj, path, r, patch, assemblyWork);
         validateBezierProblem(patch.bezier);
       } catch (const Error& e) {
         const std::string what = e.what();
