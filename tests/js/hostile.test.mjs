@@ -122,3 +122,22 @@ describe('wasm arguments and the solver wrapper', () => {
     }
   });
 });
+
+describe('memory of the module', () => {
+  it('stays bounded: alternating 2048² and 64² solves never grow the heap past the first peak', async () => {
+    const solver = await loadSolver({
+      moduleUrl: new URL('../../build/wasm/pdesurf.js', import.meta.url).href,
+      wasmBinary: fs.readFileSync(path.join(WASM, 'pdesurf.wasm')),
+    });
+    const scene = fs.readFileSync(path.join(REPO, 'examples', 'zhang-vase-fig2a.json'), 'utf8');
+    const heap = () => solver.module.HEAP8.length;
+    solver.solve(scene, { nu: 2048, nv: 2048 });
+    const peak = heap();
+    for (let k = 0; k < 3; k++) {
+      solver.solve(scene, { nu: 64, nv: 64, curvature: true });
+      solver.solve(scene, { nu: 2048, nv: 2048 });
+      assert.equal(heap(), peak, `round ${k}: ${heap() >> 20} MiB after a first peak of ${peak >> 20} MiB`);
+    }
+    assert.ok(peak < 400 << 20, `peak ${peak >> 20} MiB`);
+  });
+});
