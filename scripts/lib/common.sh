@@ -1,11 +1,13 @@
-# Shared by scripts/serve and scripts/test: idempotent set-up and the two builds.
+# Shared by scripts/serve, scripts/test and scripts/fuzz: idempotent set-up and the builds.
 # Source it; every function is safe to run again on a machine that already has everything.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD="${PDESURF_BUILD_DIR:-$ROOT/build}"
 export NODE_PATH=/usr/share/nodejs  # emscripten's optimiser needs Debian's acorn (toolchain note 1)
 
-APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev zlib1g-dev chromium nodejs)
+# clang and libclang-rt-14-dev: libFuzzer for the fuzz targets (scripts/fuzz, docs/testing.md).
+APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev zlib1g-dev chromium nodejs
+              clang libclang-rt-14-dev)
 
 log() { printf '\033[1m== %s\033[0m\n' "$*"; }
 
@@ -57,3 +59,24 @@ build_web() {
   log "web bundle ($BUILD/web)"
   node "$ROOT/scripts/build-web.mjs" --out "$BUILD/web" --wasm-dir "$BUILD/wasm"
 }
+
+# The native suite (core, CLI, doctest) with AddressSanitizer + UndefinedBehaviorSanitizer,
+# every report fatal (CMake option PDESURF_SANITIZE). -O1 -g with assertions on: usable
+# stacks, and the doctest suite runs in about a minute. gcc: no second compiler needed.
+build_asan() {
+  log "sanitized native build ($BUILD/asan)"
+  cmake -S "$ROOT" -B "$BUILD/asan" -DPDESURF_SANITIZE=ON -DCMAKE_CXX_COMPILER=g++ \
+    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" >/dev/null
+  cmake --build "$BUILD/asan" -j"$(nproc)" --target pdesurf_tests pdesurf
+}
+
+# The libFuzzer targets of tests/fuzz (CMake option PDESURF_FUZZ, clang only) and nothing else.
+build_fuzz() {
+  log "fuzz build ($BUILD/fuzz)"
+  cmake -S "$ROOT" -B "$BUILD/fuzz" -DPDESURF_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" >/dev/null
+  cmake --build "$BUILD/fuzz" -j"$(nproc)" --target scene_fuzz link_fuzz
+}
+
+# Sanitizer reports: a stack for UBSan too; leaks count (the default on x86-64 Linux).
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
