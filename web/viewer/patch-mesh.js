@@ -44,9 +44,7 @@ export function geometryFromPatch(patch) {
   g.setAttribute('normal', new THREE.BufferAttribute(patch.normals, 3));
   g.setAttribute('uv', new THREE.BufferAttribute(patch.uvs, 2));
   g.setIndex(new THREE.BufferAttribute(patch.indices, 1));
-  g.computeBoundingBox();
-  g.computeBoundingSphere();
-  return g;
+  return g; // bounds computed lazily (see updateMeshFromPatch)
 }
 
 /**
@@ -61,8 +59,10 @@ export function updateMeshFromPatch(mesh, patch) {
     a.array = array;
     a.needsUpdate = true;
   }
-  g.computeBoundingBox();
-  g.computeBoundingSphere();
+  // Bounds only when something asks (framing, picking): patch meshes are not frustum-culled,
+  // so a slider drag does not pay two passes over every vertex per solve.
+  g.boundingBox = null;
+  g.boundingSphere = null;
   setCurvature(mesh, patch);
 }
 
@@ -85,6 +85,7 @@ export function meshFromPatch(patch) {
   const solved = patch.kind === 'pde' || patch.kind === 'bezier';
   const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
+  mesh.frustumCulled = false; // the view frames the patches; culling would compute bounds per solve
   mesh.userData = { kind: patch.kind, patchName: patch.name };
   setCurvature(mesh, patch);
   return mesh;
