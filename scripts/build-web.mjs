@@ -29,6 +29,8 @@ const result = await esbuild.build({
   outdir: OUT,
   bundle: true,
   format: 'esm',
+  splitting: true, // what loads on first use (the link inflater) goes to a chunk of its own
+  chunkNames: 'chunk-[hash]',
   minify: true,
   target: 'es2022',
   legalComments: 'linked',
@@ -36,10 +38,13 @@ const result = await esbuild.build({
   logLevel: 'warning',
 });
 
-// The page: no importmap (everything is bundled), the examples index fetched while the
+// The page: no importmap (everything is bundled); the examples index and the default
+// example (the first of the index, what a page without a hash opens) fetched while the
 // scripts load.
+const first = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'index.json'), 'utf8')).examples[0].file;
 let html = fs.readFileSync(path.join(ROOT, 'web', 'index.html'), 'utf8');
-html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/, '\n  <link rel="preload" href="/examples/index.json" as="fetch" crossorigin>');
+html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/,
+  `\n  <link rel="preload" href="/examples/index.json" as="fetch" crossorigin>\n  <link rel="preload" href="/examples/${first}" as="fetch" crossorigin>`);
 if (html.includes('importmap')) throw new Error('build-web: could not take the importmap out of web/index.html');
 html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
 if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');

@@ -2,7 +2,8 @@
 // base64url(deflate-raw(UTF-8 JSON of { scene, grid?, camera? })).
 import { LinkError } from './link-error.js';
 import { encodeBase64url, decodeBase64url } from './base64url.js';
-import { deflateRaw, inflateRawCapped } from './deflate.js';
+// Loaded on first use: a page opened without a link never parses the inflater (pako).
+const deflate = () => import('./deflate.js');
 import { parseStrictJson } from './strict-json.js';
 
 export const MAX_INFLATED_BYTES = 1 << 20; // 1 MiB, the scene size limit
@@ -31,7 +32,7 @@ export async function encodeV1(state) {
   if (bytes.length > MAX_INFLATED_BYTES) {
     throw new LinkError(`the scene is too large for a link (${bytes.length} bytes, at most ${MAX_INFLATED_BYTES})`);
   }
-  return encodeBase64url(await deflateRaw(bytes));
+  return encodeBase64url(await (await deflate()).deflateRaw(bytes));
 }
 
 /**
@@ -39,7 +40,7 @@ export async function encodeV1(state) {
  * everything else that is wrong throws a LinkError.
  */
 export async function decodeV1(payload) {
-  const bytes = await inflateRawCapped(decodeBase64url(payload), MAX_INFLATED_BYTES);
+  const bytes = await (await deflate()).inflateRawCapped(decodeBase64url(payload), MAX_INFLATED_BYTES);
   let text;
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
