@@ -4,23 +4,9 @@
 // and the page path of a re-solve (slider edit to drawn: worker solve, transfer, in-place
 // attribute update, render) against the worker's own solve time, at 64², 256² and 1024².
 // Run by scripts/bench after the builds; needs build/web (scripts/build-web.mjs).
-import { startHarness } from '../tests/browser/harness.mjs';
+import { startHarness, coldStart } from '../tests/browser/harness.mjs';
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
-
-async function coldStart(h, url) {
-  const page = await h.context.newPage();
-  const cdp = await h.context.newCDPSession(page);
-  await cdp.send('Network.enable');
-  await cdp.send('Network.clearBrowserCache'); // the worker's requests share this cache
-  await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
-  await page.goto(url);
-  await page.waitForFunction(() => window.__pdesurf?.ready, null, { timeout: 30_000 });
-  // Bytes of everything fetched, the worker's too (its entries are not in the page's timeline).
-  const ms = await page.evaluate(() => window.__pdesurf.readyAt);
-  await page.close();
-  return ms;
-}
 
 async function pagePath(page, n, runs = n > 512 ? 5 : 9) {
   await page.evaluate(([nu, nv]) => window.__pdesurf.requestGrid(nu, nv), [n, n]);
@@ -40,7 +26,7 @@ async function pagePath(page, n, runs = n > 512 ? 5 : 9) {
 const h = await startHarness();
 try {
   const colds = [];
-  for (let k = 0; k < 5; k++) colds.push(await coldStart(h, `${h.base}/app/#example=you2004-fig2a`));
+  for (let k = 0; k < 5; k++) colds.push((await coldStart(h, `${h.base}/app/#example=you2004-fig2a`)).ms);
   console.log(`page (headless Chromium, SwiftShader): cold start of /app/ to the first surface, median of 5: ${median(colds).toFixed(0)} ms` +
     ` (${colds.map((x) => x.toFixed(0)).join(', ')})`);
   const page = await h.open('/app/#example=you2004-fig4a');

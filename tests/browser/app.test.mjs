@@ -7,29 +7,9 @@ import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { skip, startHarness, hooks, shoot, REPO } from './harness.mjs';
+import { skip, startHarness, hooks, shoot, coldStart, REPO } from './harness.mjs';
 
 const built = fs.existsSync(path.join(REPO, 'build', 'web', 'index.html'));
-
-/** { ms: navigation start to the first surface, bytes: encoded bytes received } of a cold load. */
-export async function coldStart(h, url) {
-  const page = await h.context.newPage();
-  const cdp = await h.context.newCDPSession(page);
-  await cdp.send('Network.enable');
-  // The worker's requests go through the same HTTP cache but not this page's session: clear it.
-  await cdp.send('Network.clearBrowserCache');
-  await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
-  let bytes = 0;
-  const encodings = {};
-  cdp.on('Network.loadingFinished', (e) => { bytes += e.encodedDataLength; });
-  page.on('response', async (r) => { encodings[new URL(r.url()).pathname] = (await r.allHeaders())['content-encoding'] ?? null; });
-  await page.goto(url);
-  await page.waitForFunction(() => window.__pdesurf?.ready || window.__pdesurf?.lastError, null, { timeout: 30_000 });
-  const ms = await page.evaluate(() => window.__pdesurf.readyAt);
-  const state = await hooks(page);
-  await page.close();
-  return { ms, bytes, encodings, state };
-}
 
 describe('the production page', { skip: skip || (!built && 'no build/web: run node scripts/build-web.mjs') }, () => {
   let h;

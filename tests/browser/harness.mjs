@@ -100,3 +100,28 @@ export async function viewStats(page, img) {
 }
 
 export const sameChecksum = (a, b) => Math.abs(a - b) <= 1e-9 * Math.abs(b);
+
+/**
+ * A cold load of `url` in a new page of the harness `h` (HTTP cache cleared and disabled):
+ * { ms: navigation start to the first surface, bytes: encoded bytes the page received,
+ *   encodings: path -> Content-Encoding, state: hooks }. tests/browser/app.test.mjs and
+ * scripts/bench-page.mjs.
+ */
+export async function coldStart(h, url) {
+  const page = await h.context.newPage();
+  const cdp = await h.context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  // The worker's requests go through the same HTTP cache but not this page's session: clear it.
+  await cdp.send('Network.clearBrowserCache');
+  await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
+  let bytes = 0;
+  const encodings = {};
+  cdp.on('Network.loadingFinished', (e) => { bytes += e.encodedDataLength; });
+  page.on('response', async (r) => { encodings[new URL(r.url()).pathname] = (await r.allHeaders())['content-encoding'] ?? null; });
+  await page.goto(url);
+  await page.waitForFunction(() => window.__pdesurf?.ready || window.__pdesurf?.lastError, null, { timeout: 30_000 });
+  const ms = await page.evaluate(() => window.__pdesurf.readyAt);
+  const state = await hooks(page);
+  await page.close();
+  return { ms, bytes, encodings, state };
+}
