@@ -7,6 +7,7 @@ import { createViewer } from './viewer/viewer.js';
 import { createPanel } from './ui/panel.js';
 import { createGallery } from './ui/gallery.js';
 import { createStatus } from './ui/status.js';
+import { createToolbar } from './ui/toolbar.js';
 import { createSceneState } from './state/scene-state.js';
 import { createSolveScheduler } from './state/solve-scheduler.js';
 import { loadExampleIndex, loadExampleScene } from './state/examples.js';
@@ -21,6 +22,7 @@ const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
+const toolbar = createToolbar(document.getElementById('toolbar'));
 let viewer = null;
 let analysis = null;
 const bezier = createBezierWiring();
