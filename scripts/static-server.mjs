@@ -40,8 +40,9 @@ function sendText(res, status, text, extraHeaders = {}) {
 }
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
-// examples it fetches, and the npm packages its importmap names (pako: the link decoder).
-const TREES = [['web'], ['examples'], ['node_modules', 'three'], ['node_modules', 'pako']];
+// examples it fetches, the docs its help links, and the npm packages its importmap names
+// (pako: the link decoder).
+const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
 const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;

@@ -8,7 +8,11 @@ import { createPanel } from './ui/panel.js';
 import { createGallery } from './ui/gallery.js';
 import { createStatus } from './ui/status.js';
 import { createToolbar } from './ui/toolbar.js';
-import { createSceneState } from './state/scene-state.js';
+import { createLayout } from './ui/layout.js';
+import { createHelpOverlay } from './ui/help-overlay.js';
+import { watchNumberControls } from './ui/number-access.js';
+import { installShortcuts } from './keyboard-shortcuts.js';
+import { createSceneState, DEFAULT_GRID } from './state/scene-state.js';
 import { createSolveScheduler } from './state/solve-scheduler.js';
 import { loadExampleIndex, loadExampleScene } from './state/examples.js';
 import { readHash, writeExampleIdToHash, markHashShown, hashIsShown } from './state/hash.js';
@@ -23,6 +27,8 @@ const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
 const toolbar = createToolbar(document.getElementById('toolbar'));
+const layout = createLayout();
+const help = createHelpOverlay();
 let viewer = null;
 let analysis = null;
 const bezier = createBezierWiring();
@@ -31,6 +37,7 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   editing: () => viewer?.editor.active() ?? null,
   controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
   analysis: () => analysis?.state() ?? null,
+  cameraState: () => viewer?.cameraState() ?? null,
   patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
 });
@@ -88,7 +95,7 @@ async function start() {
   let loadToken = 0; // a slower fetch or decode of an earlier pick must not win
   let typingTimer = 0;
 
-  const gallery = createGallery(document.getElementById('gallery'), examples, (id) => openExample(id));
+  const gallery = createGallery(document.getElementById('gallery'), examples, (id) => openExample(id), layout);
   const panel = createPanel({
     grid: state.grid,
     onGridChange: () => scheduler.request(),
@@ -139,6 +146,17 @@ async function start() {
     },
   });
 
+  watchNumberControls(panel.gui);
+  // At small sizes the panel is a sheet: its title bar closes it rather than folding it.
+  panel.gui.$title.addEventListener('click', () => {
+    if (panel.gui._closed && layout.isCompact()) {
+      panel.gui.open();
+      layout.showPanel(false);
+    }
+  });
+  addToolbarButtons();
+  installShortcuts({ fit: () => viewer.fit(), help, layout });
+
   bezier.connect({ state, viewer, panel, scheduler, status });
   const share = createShareWiring({ viewer, panel, status, hooks });
   let quiet = false; // the next solve only adds analysis data: not a user's edit
@@ -168,11 +186,27 @@ async function start() {
     scheduler.request();
   }
 
-  async function openExample(id) {
+  function addToolbarButtons() {
+    toolbar.add({ action: 'gallery', label: '☰ Examples', title: 'Examples', group: 'layout', onClick: () => layout.toggleGallery() });
+    toolbar.add({ action: 'panel', label: '⚙ Controls', title: 'Controls', group: 'layout', onClick: () => layout.togglePanel() });
+    toolbar.add({ action: 'fit', label: '⤢', title: 'Fit the view to every patch (F)', group: 'view', onClick: () => viewer.fit() });
+    toolbar.add({ action: 'help', label: '?', title: 'Keys, gestures and docs (?)', group: 'help', onClick: () => help.toggle() });
+    const mark = () => {
+      toolbar.button('gallery').setAttribute('aria-pressed', String(layout.galleryShown()));
+      toolbar.button('panel').setAttribute('aria-pressed', String(layout.panelShown()));
+    };
+    layout.onChange(mark);
+    mark();
+  }
+
+  // keepHash: a damaged link stays in the address bar (to be copied or fixed) while the
+  // default example shows.
+  async function openExample(id, { keepHash = false } = {}) {
     let entry = examples.find((e) => e.id === id);
     if (!entry) {
       notice = `unknown example "${id}"; opened "${examples[0].title}" instead`;
       entry = examples[0];
+      keepHash = true; // the link's text stays to be fixed
     }
     const token = ++loadToken;
     linkPending = false;
@@ -186,7 +220,10 @@ async function start() {
     }
     if (token !== loadToken) return;
     share.opening(); // an encode still in flight must not overwrite the example's hash
-    writeExampleIdToHash(entry.id);
+    if (!keepHash) writeExampleIdToHash(entry.id);
+    // An example opens as its file says, on the default grid.
+    Object.assign(state.grid, DEFAULT_GRID);
+    panel.refreshGrid();
     const src = entry.source ? [entry.source.paper, entry.source.figure].filter(Boolean).join(', ') : '';
     showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title });
   }
@@ -201,14 +238,12 @@ async function start() {
     } catch (err) {
       if (token !== loadToken) return;
       notice = `cannot open the link: ${err && err.message ? err.message : err}`;
-      await openExample(examples[0].id);
+      await openExample(examples[0].id, { keepHash: true });
       return;
     }
     if (token !== loadToken) return;
-    if (linked.grid) {
-      Object.assign(state.grid, linked.grid);
-      panel.refreshGrid();
-    }
+    Object.assign(state.grid, linked.grid || DEFAULT_GRID);
+    panel.refreshGrid();
     linkPending = true;
     const title = typeof linked.scene.title === 'string' && linked.scene.title ? linked.scene.title : 'untitled scene';
     showScene(linked.scene, { title: `${title} (shared link)`, camera: linked.camera || null });
@@ -244,7 +279,7 @@ async function start() {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
       linkPending = false;
       notice = `cannot open the link: ${messageOf(err)}`;
-      openExample(examples[0].id);
+      openExample(examples[0].id, { keepHash: true });
       return;
     }
     fail(err);

@@ -47,10 +47,14 @@ export async function startHarness() {
     base,
     problems,
     context, // for context-wide init scripts and response listeners
-    /** A fresh page (closing none) loading `url` and waiting for its first draw or error. */
-    async open(url, { wait = true } = {}) {
+    /**
+     * A fresh page (closing none) loading `url` and waiting for its first draw or error;
+     * viewport: { width, height } to load it at another size than 1280×800.
+     */
+    async open(url, { wait = true, viewport = null } = {}) {
       const page = first || (await context.newPage());
       first = null;
+      if (viewport) await page.setViewportSize(viewport);
       page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
       page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
       page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
@@ -94,7 +98,9 @@ export async function viewStats(page, img) {
   const r = await page.evaluate(() => {
     const view = document.getElementById('viewport').getBoundingClientRect();
     const panel = document.getElementById('panel').getBoundingClientRect();
-    return { x0: Math.ceil(view.left), x1: Math.floor(Math.min(view.right, panel.left)) };
+    // A docked panel ends the view on the right; a sheet (compact screens) or no panel does not.
+    const right = panel.width > 0 && panel.left > view.left ? Math.min(view.right, panel.left) : view.right;
+    return { x0: Math.ceil(view.left), x1: Math.floor(right) };
   });
   return pixelStats(img, { x0: r.x0, y0: 40, x1: r.x1, y1: img.height - 50 }, BACKGROUND);
 }

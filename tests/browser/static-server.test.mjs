@@ -46,6 +46,7 @@ describe('static server', () => {
     put(path.join(root, 'web', 'a.js'), 'export {};');
     fs.symlinkSync('a.js', path.join(root, 'web', 'b.js')); // a symlink inside its tree is fine
     put(path.join(root, 'examples', 'data.json'), '{}');
+    put(path.join(root, 'docs', 'page.md'), '# the page'); // the help overlay links the docs
     put(path.join(wasm, 'pdesurf.wasm'), Buffer.from([0, 0x61, 0x73, 0x6d, 1, 0, 0, 0]));
     put(path.join(tmp, 'secret.txt'), 'outside the root');
     // What the page does not need, next to what it does.
@@ -111,7 +112,7 @@ describe('static server', () => {
   });
 
   it('serves the page, the examples, the wasm module and three, and nothing else', async () => {
-    for (const p of ['/web/b.js', '/examples/data.json', '/wasm/pdesurf.wasm',
+    for (const p of ['/web/b.js', '/examples/data.json', '/docs/page.md', '/wasm/pdesurf.wasm',
       '/node_modules/three/build/three.module.js']) {
       assert.equal((await get(port, p)).status, 200, p);
     }

@@ -8,6 +8,7 @@ import { setRegionWeights } from './region-weights.js';
 import { setControlPointCoordinate } from './control-net-edit.js';
 
 const BEZIER_NUMBERS = ['lambda', 'gamma'];
+export const DEFAULT_GRID = Object.freeze({ nu: 64, nv: 64 }); // what an example opens with
 
 export function createSceneState() {
   const stash = createBoundaryStash(); // derivative conditions dropped by order changes
@@ -15,7 +16,7 @@ export function createSceneState() {
   const state = {
     scene: null,
     exampleId: null,
-    grid: { nu: 64, nv: 64 },
+    grid: { ...DEFAULT_GRID },
 
     /** Replace the whole scene (example change). */
     setScene(scene, exampleId) {

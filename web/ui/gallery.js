@@ -3,8 +3,6 @@
 // descriptions are shown as text whatever they contain.
 // DOM hooks: #gallery, data-example="<id>" on each entry's button.
 
-const PHONE = '(max-width: 700px)'; // web/style.css's phone layout
-
 function el(tag, className, text) {
   const node = document.createElement(tag);
   if (className) node.className = className;
@@ -24,10 +22,10 @@ export function groupByPaper(examples) {
 }
 
 /**
- * Build the gallery into `root` (an empty <aside>). onOpen(id) runs on a click.
- * Returns { setActive(id | null, description?) }.
+ * Build the gallery into `root` (an empty <aside>). onOpen(id) runs on a click; layout
+ * (web/ui/layout.js) opens and closes it. Returns { setActive(id | null, description?) }.
  */
-export function createGallery(root, examples, onOpen) {
+export function createGallery(root, examples, onOpen, layout) {
   root.id = 'gallery';
   const head = el('div', 'gallery-head');
   head.append(el('h1', 'gallery-heading', 'Examples'));
@@ -62,19 +60,19 @@ export function createGallery(root, examples, onOpen) {
   }
   root.append(head, list);
 
-  // Collapsing gives the whole window to the view (the layout follows a body class).
-  function setClosed(closed) {
-    document.body.classList.toggle('gallery-closed', closed);
-    toggle.textContent = closed ? '›' : '‹';
-    toggle.title = closed ? 'show the examples' : 'hide the examples';
-    toggle.setAttribute('aria-expanded', String(!closed));
+  // Collapsing gives the whole window to the view; on a small screen the gallery is a
+  // drawer over the view that closes after a pick.
+  function showToggle() {
+    const shown = layout.galleryShown();
+    toggle.textContent = shown ? '‹' : '›';
+    toggle.title = shown ? 'hide the examples' : 'show the examples';
+    toggle.setAttribute('aria-expanded', String(shown));
   }
-  toggle.addEventListener('click', () => setClosed(!document.body.classList.contains('gallery-closed')));
-  // At phone size the gallery opens over the view: start closed, close after a pick.
-  const phone = window.matchMedia(PHONE);
-  if (phone.matches) setClosed(true);
+  layout.onChange(showToggle);
+  showToggle();
+  toggle.addEventListener('click', () => layout.toggleGallery());
   list.addEventListener('click', (ev) => {
-    if (phone.matches && ev.target.closest('[data-example]')) setClosed(true);
+    if (layout.isCompact() && ev.target.closest('[data-example]')) layout.showGallery(false);
   });
 
   let active = null;

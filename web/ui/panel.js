@@ -1,5 +1,6 @@
-// The control panel (three's bundled lil-gui): the per-scene folders (parameters,
-// blends' operators, bezier patches, version-2 function fields), then sharing and grid resolution.
+// The control panel (three's bundled lil-gui): sharing, files and grid resolution at the
+// top, then the per-scene folders (parameters, blends' operators, bezier patches,
+// version-2 function fields), then analysis and joins.
 // Scene folders are rebuilt whenever another scene opens; the gallery is elsewhere.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { buildParameterFolder } from './parameter-controls.js';
@@ -36,13 +37,13 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let operators = null;
   let bezier = null;
   let expressions = null;
-  // Scene folders are appended as they are built; keep the fixed folders (analysis and
-  // joins, see keepAtEnd), share and grid last.
+  // Scene folders are appended as they are built; the top folders (share, grid, and those
+  // of addTopFolder) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
+  const top = [share.folder, gridFolder.domElement];
   const fixed = [];
   const fixedToEnd = () => {
+    for (const el of [...top].reverse()) gui.$children.prepend(el);
     for (const el of fixed) gui.$children.appendChild(el);
-    gui.$children.appendChild(share.folder);
-    gui.$children.appendChild(gridFolder.domElement);
   };
 
   function buildParameters() {
@@ -58,7 +59,13 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   return {
     gui,
 
-    /** Folders (their elements) built outside that stay after the scene folders, before share. */
+    /** A folder (its element) built outside that stays at the top, after those already there. */
+    addTopFolder(element) {
+      top.push(element);
+      fixedToEnd();
+    },
+
+    /** Folders (their elements) built outside that stay after the scene folders. */
     keepAtEnd(...elements) {
       fixed.push(...elements);
       fixedToEnd();

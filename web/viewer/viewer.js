@@ -4,7 +4,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { meshFromPatch, updateMeshFromPatch, fitsMesh, shaderWarmUpMeshes } from './patch-mesh.js';
-import { fitCameraToObject } from './fit-camera.js';
+import { createCameraRig } from './camera-rig.js';
 import { createBezierLayer } from './bezier-layer.js';
 import { createControlPointEditor } from './control-point-editor.js';
 import { createShading } from './shading.js';
@@ -45,7 +45,8 @@ export function createViewer(container, bezierEditing) {
   const joins = createJoinHighlight(overlays);
 
   const controls = new OrbitControls(camera, renderer.domElement);
-  controls.addEventListener('change', render);
+  // Zoom limits, clipping planes, fit, double-click and keys; renders on every camera change.
+  const rig = createCameraRig({ camera, controls, surfaces, dom: renderer.domElement, render });
   const editor = createControlPointEditor({
     scene, camera, dom: renderer.domElement, orbit: controls, layer: bezier, render, ...bezierEditing,
   });
@@ -94,6 +95,7 @@ export function createViewer(container, bezierEditing) {
         }
         for (const p of patches) surfaces.add(meshFromPatch(p));
       }
+      rig.invalidate();
       shading.refresh();
       bezier.update(patches);
       editor.refresh();
@@ -170,10 +172,14 @@ export function createViewer(container, bezierEditing) {
       return this.screenOf([p.getX(k), p.getY(k), p.getZ(k)]);
     },
 
-    /** Frame everything drawn (on example change only: slider moves keep the view). */
+    /** Frame every patch (a new example, the fit button, F); slider moves keep the view. */
     fit() {
-      fitCameraToObject(camera, controls, surfaces);
-      render();
+      rig.fit();
+    },
+
+    /** For the tests: clipping planes, zoom limits and the scene's radius (camera-rig.js). */
+    cameraState() {
+      return rig.state();
     },
 
     /** The view as plain arrays, for links: { position: [x, y, z], target: [x, y, z] }. */
@@ -185,13 +191,7 @@ export function createViewer(container, bezierEditing) {
     setCamera({ position, target }) {
       camera.position.fromArray(position);
       controls.target.fromArray(target);
-      // fit() sizes the clipping range from the distance; do the same here.
-      const dist = Math.max(camera.position.distanceTo(controls.target), 1e-6);
-      camera.near = dist / 100;
-      camera.far = dist * 100;
-      camera.updateProjectionMatrix();
-      controls.update();
-      render();
+      rig.afterMove();
     },
 
     /** Position arrays of the drawn meshes, in draw order. */
