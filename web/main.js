@@ -40,6 +40,8 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   cameraState: () => viewer?.cameraState() ?? null,
   patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
+  vertexWorld: (patch, k) => viewer.vertexWorld(patch, k),
+  screenOf: (xyz) => viewer.screenOf(xyz),
 });
 
 function messageOf(err) {
@@ -155,7 +157,7 @@ async function start() {
     }
   });
   addToolbarButtons();
-  installShortcuts({ fit: () => viewer.fit(), help, layout });
+  installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
   bezier.connect({ state, viewer, panel, scheduler, status });
   const share = createShareWiring({ viewer, panel, status, hooks });
@@ -189,7 +191,7 @@ async function start() {
   function addToolbarButtons() {
     toolbar.add({ action: 'gallery', label: '☰ Examples', title: 'Examples', group: 'layout', onClick: () => layout.toggleGallery() });
     toolbar.add({ action: 'panel', label: '⚙ Controls', title: 'Controls', group: 'layout', onClick: () => layout.togglePanel() });
-    toolbar.add({ action: 'fit', label: '⤢', title: 'Fit the view to every patch (F)', group: 'view', onClick: () => viewer.fit() });
+    toolbar.add({ action: 'fit', label: '⤢', title: 'Fit the view to every patch (F)', group: 'view', onClick: () => viewer.fit(true) });
     toolbar.add({ action: 'help', label: '?', title: 'Keys, gestures and docs (?)', group: 'help', onClick: () => help.toggle() });
     const mark = () => {
       toolbar.button('gallery').setAttribute('aria-pressed', String(layout.galleryShown()));

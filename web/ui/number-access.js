@@ -34,11 +34,15 @@ function enhance(c) {
       const v = c.getValue();
       const next = {
         ArrowRight: v + step, ArrowUp: v + step, ArrowLeft: v - step, ArrowDown: v - step,
-        PageUp: v + range / 10, PageDown: v - range / 10, Home: c._min, End: c._max,
+        PageUp: v + range / 10, PageDown: v - range / 10,
       }[ev.key];
-      if (next === undefined) return;
-      ev.preventDefault();
-      c.setValue(Math.min(c._max, Math.max(c._min, c._snap(next))));
+      if (next !== undefined) {
+        ev.preventDefault();
+        c.setValue(Math.min(c._max, Math.max(c._min, c._snap(next))));
+      } else if (ev.key === 'Home' || ev.key === 'End') {
+        ev.preventDefault();
+        c.setValue(ev.key === 'Home' ? c._min : c._max); // the ends exactly, not the nearest step
+      }
     });
     // A held key is one change (one undo step): it finishes when the key comes up.
     s.addEventListener('keyup', () => c._callOnFinishChange());

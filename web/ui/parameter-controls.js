@@ -29,8 +29,10 @@ export function buildParameterFolder(gui, scene, { onChange, onAdd, onRemove }) 
     const { min, max, value, step } = p;
     // Only plain numeric ranges make a slider; the solver reports anything else.
     if (![min, max, value].every(Number.isFinite) || !(max > min)) continue;
+    // Without a step of the scene's own, lil-gui's implicit step (range / 1000) moves the
+    // slider and a typed value is kept as typed (an explicit step would round it).
     const ctrl = folder
-      .add(p, 'value', min, max, Number.isFinite(step) && step > 0 ? step : (max - min) / 1000)
+      .add(p, 'value', min, max, Number.isFinite(step) && step > 0 ? step : undefined)
       .name(escapeHtml(name))
       .onChange(onChange);
     ctrl.domElement.dataset.param = name; // stable hook for tests and styling

@@ -50,6 +50,14 @@ export function createCameraRig({ camera, controls, surfaces, dom, render }) {
   }
 
   controls.addEventListener('start', bounds); // before the gesture's first update clamps
+
+  // A move the user asked for outside a drag (a key, a double-click, the fit button): the
+  // controls' start and end events around it, so listeners (the share link) see a gesture.
+  function asGesture(move) {
+    controls.dispatchEvent({ type: 'start' });
+    move();
+    controls.dispatchEvent({ type: 'end' });
+  }
   controls.addEventListener('change', () => {
     clip();
     render();
@@ -64,10 +72,11 @@ export function createCameraRig({ camera, controls, surfaces, dom, render }) {
     raycaster.setFromCamera(ndc, camera);
     const hit = raycaster.intersectObjects(surfaces.children, false)[0];
     if (!hit) return;
-    bounds();
-    camera.position.add(hit.point.clone().sub(controls.target));
-    controls.target.copy(hit.point);
-    controls.update();
+    asGesture(() => {
+      camera.position.add(hit.point.clone().sub(controls.target));
+      controls.target.copy(hit.point);
+      controls.update();
+    });
   });
 
   // Arrow keys orbit, + and − zoom; only while the canvas has the focus, so they never
@@ -81,15 +90,15 @@ export function createCameraRig({ camera, controls, surfaces, dom, render }) {
       ArrowRight: () => controls.rotateLeft(-KEY_ORBIT),
       ArrowUp: () => controls.rotateUp(KEY_ORBIT),
       ArrowDown: () => controls.rotateUp(-KEY_ORBIT),
-      '+': () => controls.dollyIn(KEY_ZOOM),
-      '=': () => controls.dollyIn(KEY_ZOOM),
-      '-': () => controls.dollyOut(KEY_ZOOM),
-      _: () => controls.dollyOut(KEY_ZOOM),
+      // OrbitControls' dollyOut brings the camera closer.
+      '+': () => controls.dollyOut(KEY_ZOOM),
+      '=': () => controls.dollyOut(KEY_ZOOM),
+      '-': () => controls.dollyIn(KEY_ZOOM),
+      _: () => controls.dollyIn(KEY_ZOOM),
     }[ev.key];
     if (!act) return;
     ev.preventDefault();
-    bounds();
-    act();
+    asGesture(act);
   });
 
   return {
@@ -98,13 +107,17 @@ export function createCameraRig({ camera, controls, surfaces, dom, render }) {
       dirty = true;
     },
 
-    /** Frame every patch from the default direction. */
-    fit() {
+    /** Frame every patch from the default direction; byUser: the fit button or F (a gesture). */
+    fit(byUser = false) {
       dirty = true;
-      bounds();
-      fitCameraToObject(camera, controls, surfaces);
-      clip();
-      render();
+      const move = () => {
+        bounds();
+        fitCameraToObject(camera, controls, surfaces);
+        clip();
+        render();
+      };
+      if (byUser) asGesture(move);
+      else move();
     },
 
     /** The camera was placed from outside (a link): limits and planes follow it. */

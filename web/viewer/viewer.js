@@ -163,18 +163,24 @@ export function createViewer(container, bezierEditing) {
       return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
     },
 
-    /** Where vertex k of the patch named `name` appears in the page, or null. */
-    vertexScreen(name, k) {
+    /** Vertex k of the patch named `name` as [x, y, z], or null. */
+    vertexWorld(name, k) {
       const m = surfaces.children.find((c) => c.name === name);
       if (!m) return null;
       const p = m.geometry.getAttribute('position');
       if (k < 0 || k >= p.count) return null;
-      return this.screenOf([p.getX(k), p.getY(k), p.getZ(k)]);
+      return [p.getX(k), p.getY(k), p.getZ(k)];
     },
 
-    /** Frame every patch (a new example, the fit button, F); slider moves keep the view. */
-    fit() {
-      rig.fit();
+    /** Where vertex k of the patch named `name` appears in the page, or null. */
+    vertexScreen(name, k) {
+      const xyz = this.vertexWorld(name, k);
+      return xyz && this.screenOf(xyz);
+    },
+
+    /** Frame every patch: a new example, or byUser (the fit button, F); slider moves keep the view. */
+    fit(byUser = false) {
+      rig.fit(byUser);
     },
 
     /** For the tests: clipping planes, zoom limits and the scene's radius (camera-rig.js). */
