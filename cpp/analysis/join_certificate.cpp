@@ -12,10 +12,12 @@ namespace pdesurf {
 
 namespace {
 
-// What a patch promises at its joins: the lowest continuity any coordinate's order gives
+// What a patch promises at a join: the lowest continuity any coordinate's order gives
 // (2nd G0, 4th G1, 6th G2); a membrane Bézier fixes one ring (G0), a thin plate two (G1).
-int promisedLevel(const Patch& p) {
+// An end given by reference (scene version 3) promises the continuity it asks for.
+int promisedLevel(const Patch& p, int end) {
   if (p.kind == PatchKind::Bezier) return p.bezier.energy == BezierEnergy::ThinPlate ? 1 : 0;
+  if (p.ends[end].given) return static_cast<int>(p.ends[end].continuity);
   int order = 6;
   for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
   return order / 2 - 1;
@@ -60,7 +62,7 @@ JoinResult certifyOne(const Patch& primary, const SolvedPatch& prim, const Solve
   r.end = std::string(m.alongU ? "v" : "u") + (m.end ? "1" : "0");
   r.surface = primary.name;
   r.edge = m.atT1 ? "t1" : "t0";
-  r.level = promisedLevel(*target.patch);
+  r.level = promisedLevel(*target.patch, m.alongU ? 0 : m.end);
   // The target's border parameter runs over its own range; the primary's v over the given
   // interval, else (PDE) the same v as the target, else (Bézier) the primary's v-range.
   const double a0 = m.alongU ? ts.u0 : ts.v0, a1 = m.alongU ? ts.u1 : ts.v1;

@@ -204,21 +204,23 @@ std::string toText(const Expr& e, const char* vName, const char* uName) {
   return "?";
 }
 
-Expr substitute(const Expr& e, ExprVar var, double value) {
+Expr substitute(const Expr& e, ExprVar var, const Expr& by) {
   if (!dependsOn(e, var)) return e;
   switch (e->op) {
-    case Op::Var: return constant(value);
-    case Op::Neg: return negate(substitute(e->a, var, value));
-    case Op::Add: return add(substitute(e->a, var, value), substitute(e->b, var, value));
-    case Op::Sub: return subtract(substitute(e->a, var, value), substitute(e->b, var, value));
-    case Op::Mul: return multiply(substitute(e->a, var, value), substitute(e->b, var, value));
-    case Op::Div: return divide(substitute(e->a, var, value), substitute(e->b, var, value));
-    case Op::Pow: return power(substitute(e->a, var, value), substitute(e->b, var, value));
-    case Op::Call: return call(e->fn, substitute(e->a, var, value));
+    case Op::Var: return by;
+    case Op::Neg: return negate(substitute(e->a, var, by));
+    case Op::Add: return add(substitute(e->a, var, by), substitute(e->b, var, by));
+    case Op::Sub: return subtract(substitute(e->a, var, by), substitute(e->b, var, by));
+    case Op::Mul: return multiply(substitute(e->a, var, by), substitute(e->b, var, by));
+    case Op::Div: return divide(substitute(e->a, var, by), substitute(e->b, var, by));
+    case Op::Pow: return power(substitute(e->a, var, by), substitute(e->b, var, by));
+    case Op::Call: return call(e->fn, substitute(e->a, var, by));
     case Op::Const: break;
   }
   return e;
 }
+
+Expr substitute(const Expr& e, ExprVar var, double value) { return substitute(e, var, constant(value)); }
 
 Expr derivative(const Expr& e, ExprVar var) {
   if (!dependsOn(e, var)) return constant(0.0);

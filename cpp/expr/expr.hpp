@@ -50,5 +50,7 @@ size_t nodeCount(const Expr& e);
 std::string toText(const Expr& e, const char* vName = "v", const char* uName = "u");
 // e with the variable replaced by a number (folded by the builders).
 Expr substitute(const Expr& e, ExprVar var, double value);
+// e with the variable replaced by an expression (a trimline t = τ(v) put into S(t, v)).
+Expr substitute(const Expr& e, ExprVar var, const Expr& by);
 
 }  // namespace pdesurf

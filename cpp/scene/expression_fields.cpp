@@ -39,9 +39,15 @@ bool generalOfFamily(const Expr& part, double* coef, VFunction* f) {
 
 }  // namespace
 
-VExpansion slotExpression(const json& j, const std::string& path, const Resolver& r) {
+VExpansion slotExpression(const json& j, const std::string& path, const Resolver& r, Expr* parsed) {
   std::string text;
-  const Split sp = splitExpression(parseField(j, path, r, AllowedVariables{true, false}, &text));
+  const Expr e = parseField(j, path, r, AllowedVariables{true, false}, &text);
+  if (parsed) *parsed = e;
+  return slotFromExpr(e, text);
+}
+
+VExpansion slotFromExpr(const Expr& e, const std::string& text) {
+  const Split sp = splitExpression(e);
   VExpansion out;
   for (const SplitTerm& t : sp.terms) out.push_back({t.v, t.coef});
   Expr rest;
@@ -74,11 +80,13 @@ void forceExpression(const json& j, const std::string& path, const Resolver& r, 
   if (sp.remainder) cp.generalForce.push_back({text, sp.remainder});
 }
 
-void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise) {
+void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise, Expr* full) {
   std::string text;
   AllowedVariables vars{true, true};
   vars.uName = "t";
-  const Split sp = splitExpression(parseField(j, path, r, vars, &text));
+  const Expr e = parseField(j, path, r, vars, &text);
+  if (full) *full = e;
+  const Split sp = splitExpression(e);
   for (const SplitTerm& t : sp.terms) terms.push_back({t.s, t.v, t.coef});
   *pointwise = sp.remainder;
 }

@@ -12,12 +12,17 @@ namespace pdesurf::scene_json {
 // An expression in v: family terms, plus one general term for what does not split (its text
 // is the user's, for error messages). c·general(f) with f one family function keeps f as its
 // origin, so the closed form stays available to measure the general methods against.
-VExpansion slotExpression(const json& j, const std::string& path, const Resolver& r);
+// `parsed`, when given, receives the expression before it is split.
+VExpansion slotExpression(const json& j, const std::string& path, const Resolver& r, Expr* parsed = nullptr);
+
+// The same for an expression built in code (a derived end); `text` names it in errors.
+VExpansion slotFromExpr(const Expr& e, const std::string& text);
 
 // An expression in u and v: (polynomial in u) × family terms, and a general force.
 void forceExpression(const json& j, const std::string& path, const Resolver& r, ComponentProblem& cp);
 
 // An expression in t and v for one coordinate of a primary surface.
-void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise);
+// `full`, when given, receives the whole expression.
+void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise, Expr* full = nullptr);
 
 }  // namespace pdesurf::scene_json

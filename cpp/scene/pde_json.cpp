@@ -2,6 +2,7 @@
 // boundary conditions by derivative order, and forces.
 #include <cmath>
 
+#include "scene/ends_json.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
@@ -18,6 +19,14 @@ constexpr int kMaxForceDegree = 8;
 const std::vector<std::string>& namesFor(int order) {
   static const std::vector<std::string> second{"s", "t"}, fourth{"b", "c", "d"}, sixth{"a"};
   return order == 2 ? second : order == 4 ? fourth : sixth;
+}
+
+// The papers' standard operator of an order (web/state/operator-edit.js has the same):
+// what a blend with ends by reference gets when it names no coefficients.
+json defaultOperator(int order) {
+  if (order == 2) return {{"order", 2}, {"s", 1}, {"t", 1}};
+  if (order == 4) return {{"order", 4}, {"b", 1}, {"c", 2}, {"d", 1}};
+  return {{"order", 6}, {"a", 1}};
 }
 
 // alpha from the named values: order 6 by "a" means (∂²u + a²∂²v)³ (seed 003 Eq. 1).
@@ -114,7 +123,13 @@ void parseForce(const json& j, const std::string& path, const Resolver& r, Compo
 }  // namespace
 
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary", "force", "method"});
+  allowOnly(j, path, {"name", "kind", "v_range", "operator", "boundary", "force", "method", "ends"});
+  // Version 3: ends by reference set the order the operator needs (and may leave it out).
+  int needed = 0;
+  if (j.contains("ends")) {
+    if (version < 3) fail(ErrorCode::InvalidField, path + ".ends", "ends by reference need scene version 3");
+    needed = parseEnds(j["ends"], path + ".ends", r, patch);
+  }
   if (j.contains("method")) {
     try {
       patch.method = parseMethod(stringField(j["method"], path + ".method", 64));
@@ -127,8 +142,15 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
   patch.pde.v1 = vr[1];
 
   const std::string op = path + ".operator";
-  const json& o = require(j, "operator", path);
-  if (!o.is_object()) fail(ErrorCode::InvalidField, op, "expected an object");
+  json withOrder;  // the operator object, given its order when the ends decide it
+  if (needed && !j.contains("operator")) withOrder = defaultOperator(needed);
+  else withOrder = require(j, "operator", path);
+  if (!withOrder.is_object()) fail(ErrorCode::InvalidField, op, "expected an object");
+  if (needed && !withOrder.contains("order") && !withOrder.contains("x") && !withOrder.contains("y") && !withOrder.contains("z")) {
+    if (withOrder.empty()) withOrder = defaultOperator(needed);
+    else withOrder["order"] = needed;
+  }
+  const json& o = withOrder;
   const bool perComponent = !o.contains("order");
   if (perComponent) allowOnly(o, op, {"x", "y", "z"});
   for (int c = 0; c < 3; ++c) {
@@ -141,10 +163,19 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
       checkLeading(patch.op[c], o, op, c, true);
     }
     patch.pde.component[c].alpha = alphaOf(patch.op[c]);
+    if (patch.op[c].order < needed) {
+      const int end = static_cast<int>(patch.ends[1].continuity) > static_cast<int>(patch.ends[0].continuity) && patch.ends[1].given ? 1 : 0;
+      static const char* level[3] = {"position", "tangency", "curvature"};
+      fail(ErrorCode::InvalidField, (perComponent ? op + "." + kAxis[c] : op) + ".order",
+           std::string(level[static_cast<int>(patch.ends[end].continuity)]) + " continuity at " + (end ? "u1" : "u0") +
+               " needs an order-" + std::to_string(needed) + " operator; " + kAxis[c] + " has order " + std::to_string(patch.op[c].order));
+    }
   }
 
   const std::string bp = path + ".boundary";
-  const json& bnd = require(j, "boundary", path);
+  static const json kNone = json::object();
+  const bool allByReference = patch.ends[0].given && patch.ends[1].given;
+  const json& bnd = allByReference && !j.contains("boundary") ? kNone : require(j, "boundary", path);
   allowOnly(bnd, bp, {"x", "y", "z"});
   for (int k = 0; k < 3; ++k) {
     const int n = patch.op[k].order / 2;
@@ -160,6 +191,8 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
       if (!comp.contains(key)) continue;
       const json& list = comp[key];
       const std::string lp = cpath + "." + key;
+      if (patch.ends[end].given)
+        fail(ErrorCode::InvalidField, lp, std::string("end ") + key + " is given by reference (" + path + ".ends." + key + "): its conditions are derived, not typed");
       static const char* kinds[3] = {"X", "dX/du", "d2X/du2"};
       std::string expect = kinds[0];
       for (int i = 1; i < n; ++i) expect += std::string(", ") + kinds[i];
@@ -169,7 +202,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
       for (size_t i = 0; i < list.size(); ++i) {
         const std::string sp = lp + "[" + std::to_string(i) + "]";
         VExpansion& slot = (end == 0 ? cp.left : cp.right)[i];
-        if (version >= 2) slot = slotExpression(list[i], sp, r);
+        if (version >= 2) slot = slotExpression(list[i], sp, r, i == 0 ? &patch.typedPosition[end][k] : nullptr);
         else slot = r.terms(list[i], sp);
       }
     }

@@ -34,6 +34,28 @@ struct PrimarySurface {
   double t0 = 0, t1 = 1, v0 = 0, v1 = 0;
   std::array<std::vector<PrimaryTerm>, 3> terms;
   std::array<Expr, 3> pointwise;  // what does not separate (version-2 "surface" expressions)
+  // Each coordinate's whole expression in t (ExprVar::U) and v: "surface" patches only
+  // (null otherwise); blend ends by reference are derived from it (scene/derived_ends.hpp).
+  std::array<Expr, 3> full;
+  bool trimmed = false;  // reparametrised by a curve trimline: t0 = 0 is the trimline
+};
+
+// Version 3: how smoothly a blend's end meets the surface it names (G0, G1, G2).
+enum class Continuity { Position = 0, Tangency = 1, Curvature = 2 };
+
+// Version 3: a pde patch end given by reference, {"surface", "at", "continuity", "power",
+// "flip"} (docs/blends-by-reference.md). Its conditions are derived from the surface.
+struct EndReference {
+  bool given = false;
+  std::string surface;  // the name of a "surface" patch
+  bool curve = false;   // the trimline is t = tau(v); else the iso-line t = t0 or t1
+  bool atT1 = false;    // iso-line: t1 (else t0); curve: it replaces the border t1 (else t0)
+  Expr tau;             // curve only: an expression in v
+  Continuity continuity = Continuity::Tangency;
+  Expr power;           // in v (parameters folded in); 1 when not given
+  bool surfaceScale = false;  // "scale": "surface": power times S_t itself; else ("gap") normalised
+  bool flip = false;
+  std::string path;     // "patches[0].ends.u0", for errors
 };
 
 // Where a primary surface meets a PDE or Bézier patch: its t = t0 (or t1) curve is that
@@ -67,10 +89,15 @@ struct Patch {
   Method method;                        // Pde only: "method" in the scene, default auto
   PrimarySurface primary;  // Primary only
   BezierProblem bezier;    // Bezier only (seed 002)
+  // Pde only, version 3: the ends given by reference ([0] u0, [1] u1), and the typed ends'
+  // position expressions per coordinate (null: not typed), for the extra conditions of an
+  // end that asks less than the operator carries.
+  std::array<EndReference, 2> ends;
+  std::array<std::array<Expr, 3>, 2> typedPosition;
 };
 
 struct Scene {
-  int version = 2;  // of the file it was read from
+  int version = 2;  // of the file it was read from (1, 2 or 3)
   std::string title;
   std::vector<Parameter> parameters;
   std::vector<Patch> patches;

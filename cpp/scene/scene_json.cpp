@@ -4,6 +4,7 @@
 #include <set>
 
 #include "bezier/bezier_solver.hpp"
+#include "scene/derived_ends.hpp"
 #include "scene/expression_fields.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
@@ -107,9 +108,12 @@ void parseSurface(const json& j, const std::string& path, const Resolver& r, Pat
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
   parseMeets(j, path, r, patch);
   primaryRanges(j, path, r, patch.primary);
-  for (int c = 0; c < 3; ++c)
+  for (int c = 0; c < 3; ++c) {
     if (j.contains(kAxis[c]))
-      surfaceExpression(j[kAxis[c]], path + "." + kAxis[c], r, patch.primary.terms[c], &patch.primary.pointwise[c]);
+      surfaceExpression(j[kAxis[c]], path + "." + kAxis[c], r, patch.primary.terms[c], &patch.primary.pointwise[c], &patch.primary.full[c]);
+    else
+      patch.primary.full[c] = constant(0.0);  // a missing coordinate is 0
+  }
 }
 
 // "separable": per coordinate, terms with an optional factor "t": {fn, w, n} of t.
@@ -161,8 +165,8 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (!format.is_string() || format.get<std::string>() != "pdesurf-scene")
     fail(ErrorCode::InvalidField, "format", "expected \"pdesurf-scene\"");
   const json& version = require(doc, "version", "scene");
-  if (!version.is_number_integer() || (version.get<long long>() != 1 && version.get<long long>() != 2))
-    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 and 2");
+  if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > 3)
+    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1, 2 and 3");
   allowOnly(doc, "scene", {"format", "version", "id", "title", "description", "source", "parameters", "patches"});
   Scene scene;
   scene.version = static_cast<int>(version.get<long long>());
@@ -217,6 +221,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     }
     scene.patches.push_back(std::move(patch));
   }
+  deriveEnds(scene);  // version 3: ends by reference, once every surface is known
   for (size_t i = 0; i < scene.patches.size(); ++i) {
     const Meets& m = scene.patches[i].meets;
     if (m.patch.empty()) continue;

@@ -1,0 +1,85 @@
+// Version 3's "ends" of a pde patch: each of u0 and u1 given by reference to a primary
+// surface, {"surface", "at", "continuity", "power", "flip"}. Only read here; the conditions
+// are derived once every patch is known (scene/derived_ends.cpp).
+#include "scene/ends_json.hpp"
+
+#include <algorithm>
+
+namespace pdesurf::scene_json {
+
+namespace {
+
+Expr expressionInV(const json& j, const std::string& path, const Resolver& r) {
+  if (j.is_number()) {
+    const double x = j.get<double>();
+    if (!std::isfinite(x)) fail(ErrorCode::NonFinite, path, "not a finite number");
+    return constant(x);
+  }
+  const std::string text = stringField(j, path, kMaxExpressionLength);
+  if (text.empty()) fail(ErrorCode::InvalidField, path, "empty expression");
+  try {
+    return parseExpression(text, r.values, AllowedVariables{true, false});
+  } catch (const Error& e) {
+    fail(e.code(), path, e.what());
+  }
+}
+
+EndReference parseEnd(const json& j, const std::string& path, const Resolver& r) {
+  allowOnly(j, path, {"surface", "at", "continuity", "power", "scale", "flip"});
+  EndReference e;
+  e.given = true;
+  e.path = path;
+  e.surface = stringField(require(j, "surface", path), path + ".surface", 64);
+  const json& at = require(j, "at", path);
+  if (at.is_string()) {
+    const std::string s = at.get<std::string>();
+    if (s != "t0" && s != "t1") fail(ErrorCode::InvalidField, path + ".at", "expected \"t0\", \"t1\" or {\"t\": \"<expression in v>\"}");
+    e.atT1 = s == "t1";
+  } else if (at.is_object()) {
+    allowOnly(at, path + ".at", {"t", "replaces"});
+    e.curve = true;
+    e.tau = expressionInV(require(at, "t", path + ".at"), path + ".at.t", r);
+    if (at.contains("replaces")) {
+      const std::string s = stringField(at["replaces"], path + ".at.replaces");
+      if (s != "t0" && s != "t1") fail(ErrorCode::InvalidField, path + ".at.replaces", "expected \"t0\" or \"t1\"");
+      e.atT1 = s == "t1";
+    }
+  } else {
+    fail(ErrorCode::InvalidField, path + ".at", "expected \"t0\", \"t1\" or {\"t\": \"<expression in v>\"}");
+  }
+  if (j.contains("continuity")) {
+    const std::string c = stringField(j["continuity"], path + ".continuity");
+    if (c == "position") e.continuity = Continuity::Position;
+    else if (c == "tangency") e.continuity = Continuity::Tangency;
+    else if (c == "curvature") e.continuity = Continuity::Curvature;
+    else fail(ErrorCode::InvalidField, path + ".continuity", "expected \"position\", \"tangency\" or \"curvature\"");
+  }
+  e.power = j.contains("power") ? expressionInV(j["power"], path + ".power", r) : constant(1.0);
+  if (j.contains("scale")) {
+    const std::string sc = stringField(j["scale"], path + ".scale");
+    if (sc != "gap" && sc != "surface") fail(ErrorCode::InvalidField, path + ".scale", "expected \"gap\" or \"surface\"");
+    e.surfaceScale = sc == "surface";
+  }
+  if (j.contains("flip")) {
+    if (!j["flip"].is_boolean()) fail(ErrorCode::InvalidField, path + ".flip", "expected true or false");
+    e.flip = j["flip"].get<bool>();
+  }
+  return e;
+}
+
+}  // namespace
+
+int parseEnds(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+  allowOnly(j, path, {"u0", "u1"});
+  int order = 0;
+  for (int end = 0; end < 2; ++end) {
+    const char* key = end == 0 ? "u0" : "u1";
+    if (!j.contains(key)) continue;
+    patch.ends[end] = parseEnd(j[key], path + "." + key, r);
+    order = std::max(order, 2 * (static_cast<int>(patch.ends[end].continuity) + 1));
+  }
+  if (order == 0) fail(ErrorCode::InvalidField, path, "expected u0, u1 or both");
+  return order;
+}
+
+}  // namespace pdesurf::scene_json
