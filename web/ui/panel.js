@@ -39,9 +39,11 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   // Scene folders are appended as they are built; keep the fixed folders (analysis and
   // joins, see keepAtEnd), share and grid last.
   const fixed = [];
+  const afterShare = [];
   const fixedToEnd = () => {
     for (const el of fixed) gui.$children.appendChild(el);
     gui.$children.appendChild(share.folder);
+    for (const el of afterShare) gui.$children.appendChild(el);
     gui.$children.appendChild(gridFolder.domElement);
   };
 
@@ -61,6 +63,12 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
     /** Folders (their elements) built outside that stay after the scene folders, before share. */
     keepAtEnd(...elements) {
       fixed.push(...elements);
+      fixedToEnd();
+    },
+
+    /** Folders (their elements) built outside that stay right after share (the File folder). */
+    keepAfterShare(...elements) {
+      afterShare.push(...elements);
       fixedToEnd();
     },
 
