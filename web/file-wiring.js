@@ -6,12 +6,14 @@
 import { buildFileFolder } from './ui/file-controls.js';
 import { createFilePicker } from './import/file-picker.js';
 import { installFileDrop } from './import/file-drop.js';
-import { readSceneFile } from './import/scene-file.js';
 import { downloadFile } from './export/download.js';
 import { exportBaseName, pngFileName } from './export/file-names.js';
-import { exportObj, exportStl, exportGlb } from './export/mesh-export.js';
-import { renderPng } from './export/png-export.js';
-import { sceneFileText } from './export/scene-export.js';
+
+// What runs only once a file is opened or exported loads then (the cold start stays as it was).
+const meshExport = () => import('./export/mesh-export.js');
+const pngExport = () => import('./export/png-export.js');
+const sceneExport = () => import('./export/scene-export.js');
+const sceneFile = () => import('./import/scene-file.js');
 
 const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
 const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
@@ -42,7 +44,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     const name = file.name || 'the file';
     let read;
     try {
-      read = await readSceneFile(file);
+      read = await (await sceneFile()).readSceneFile(file);
     } catch (err) {
       refuse(name, err);
       return;
@@ -79,10 +81,11 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     }
   }
 
-  function meshExport(action, run, type) {
+  // action: obj, stl or glb; run(module of export/mesh-export.js, surfaces) -> file data.
+  function meshFile(action, run, type) {
     return () => exportWith(action, async () => {
       if (!surfaces().children.length) throw new Error('no surface is drawn yet');
-      return { data: await run(surfaces()), name: `${baseName()}.${action}`, type };
+      return { data: await run(await meshExport(), surfaces()), name: `${baseName()}.${action}`, type };
     });
   }
 
@@ -92,13 +95,15 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     open: () => picker.open(),
     json: () => exportWith('json', async () => {
       if (!state.scene) throw new Error('no scene is open');
-      return { data: sceneFileText(state.scene), name: `${baseName()}.json`, type: 'application/json' };
+      const text = (await sceneExport()).sceneFileText(state.scene);
+      return { data: text, name: `${baseName()}.json`, type: 'application/json' };
     }),
-    obj: meshExport('obj', exportObj, 'model/obj'),
-    stl: meshExport('stl', exportStl, 'model/stl'),
-    glb: meshExport('glb', (s) => exportGlb(s, baseName()), 'model/gltf-binary'),
+    obj: meshFile('obj', (m, s) => m.exportObj(s), 'model/obj'),
+    stl: meshFile('stl', (m, s) => m.exportStl(s), 'model/stl'),
+    glb: meshFile('glb', (m, s) => m.exportGlb(s, baseName()), 'model/gltf-binary'),
     png: ({ scale, transparent }) => exportWith('png', async () => {
       const { scene } = viewer.sceneGraph();
+      const { renderPng } = await pngExport();
       const png = await renderPng({ renderer: viewer.renderer, scene, camera: viewer.camera }, { scale, transparent });
       viewer.render();
       const note = png.clamped ? `reduced to ${png.width}×${png.height} (${png.scale.toFixed(2)}×): ${png.limit}` : null;
