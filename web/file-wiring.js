@@ -16,6 +16,7 @@ const sceneExport = () => import('./export/scene-export.js');
 const sceneFile = () => import('./import/scene-file.js');
 
 const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
+const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
 
 /**
@@ -49,9 +50,10 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
       refuse(name, err);
       return;
     }
-    let previous = null;
+    // Another file still waiting for its first solve: the scene to come back to is the one before it.
+    let previous = pending ? pending.previous : null;
     try {
-      if (state.scene) previous = { text: state.text(), exampleId: state.exampleId, title: currentTitle(), camera: viewer.getCamera() };
+      if (!pending && state.scene) previous = { text: state.text(), exampleId: state.exampleId, title: currentTitle(), camera: viewer.getCamera() };
     } catch {
       previous = null; // a page state that cannot be written as JSON cannot be restored either
     }
@@ -65,6 +67,9 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     busy = true;
     const t0 = performance.now();
     try {
+      // A large OBJ takes a second on the page's thread: say so before it starts.
+      status.info(`exporting ${action.toUpperCase()}…`);
+      await nextPaint();
       const { data, name, type, note } = await make();
       const bytes = downloadFile(data, name, type);
       const ms = performance.now() - t0;

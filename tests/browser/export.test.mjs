@@ -113,6 +113,8 @@ describe('exports from the page', { skip }, () => {
     assert.ok(share >= 0, titles.join(', '));
     assert.equal(titles[share + 1], 'File', titles.join(', '));
     await page.locator('#panel [data-folder="file"] > .title').click();
+    // lil-gui animates the opening: wait for it to end.
+    await page.waitForFunction(() => !document.querySelector('#panel [data-folder="file"]').matches('.closed, .transition'));
     for (const key of ['open', 'json', 'obj', 'stl', 'glb', 'png']) {
       assert.ok(await page.locator(`#panel [data-file="${key}"] button`).isVisible(), key);
     }

@@ -15,7 +15,7 @@ export function pngSize(width, height, scale, maxSide, maxPixels = MAX_PNG_PIXEL
   }
   if (width * height * s * s > maxPixels) {
     s = Math.sqrt(maxPixels / (width * height));
-    limit = `at most ${(maxPixels / 1e6).toFixed(0)} megapixels`;
+    limit = `a PNG has at most ${Math.round(Math.sqrt(maxPixels))}² pixels`;
   }
   const w = Math.max(1, Math.floor(width * s));
   const h = Math.max(1, Math.floor(height * s));
