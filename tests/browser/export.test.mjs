@@ -6,6 +6,7 @@
 // their normals, plain materials even while zebra shading is on; PNG: the drawing buffer
 // times 1, 2 or 4, colours as on screen, a transparent one with alpha 0 off the surface;
 // scene JSON: the page state, which the CLI reads to the same samples as the example file.
+// The production page (/app/, when built) loads the exporters from its lazy chunks.
 // DOM hooks: data-file="…" (web/ui/file-controls.js).
 //   PDESURF_WASM_DIR=build/wasm node --test tests/browser/export.test.mjs
 import { describe, it, before, after } from 'node:test';
@@ -13,7 +14,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { execFileSync } from 'node:child_process';
-import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, OUT_DIR, ROOT, BACKGROUND } from './harness.mjs';
+import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, OUT_DIR, ROOT, REPO, BACKGROUND } from './harness.mjs';
 import { decodePng } from './png-decode.mjs';
 import { blockAverage } from './image-diff.mjs';
 
@@ -318,6 +319,23 @@ describe('exports from the page', { skip }, () => {
     assert.equal((await download(page, 'obj')).name, 'cone-plane-b-1.obj');
     await page.locator('#panel [data-file="png-scale"] select').selectOption('2×');
     assert.equal((await download(page, 'png')).name, 'cone-plane-b-1@2x.png');
+  });
+
+  it('the production page (/app/) loads the exporters from its chunks', { skip: !fs.existsSync(path.join(REPO, 'build', 'web', 'index.html')) && 'no build/web' }, async () => {
+    const app = await h.open('/app/#example=wu2015-fig3');
+    await app.locator('#panel [data-folder="file"] > .title').click();
+    const m = await app.evaluate(() => ({ ...window.__pdesurf.lastSolve }));
+    for (const [key, check] of [
+      ['glb', (b) => assert.deepEqual(readGlb(b).json.nodes.map((n) => n.name), ['hat'])],
+      ['stl', (b) => assert.equal(b.readUInt32LE(80), 2 * m.nu * m.nv)],
+      ['png', (b) => assert.ok(decodePng(b).width > 0)],
+    ]) {
+      const [d] = await Promise.all([app.waitForEvent('download', { timeout: 60_000 }), app.locator(`#panel [data-file="${key}"] button`).click()]);
+      assert.equal(d.suggestedFilename(), `wu2015-fig3.${key}`);
+      check(fs.readFileSync(await d.path()));
+    }
+    assert.deepEqual(await app.evaluate(() => window.__cspViolations), []);
+    await app.close();
   });
 
   it('logged no console error, page error, failed request or CSP violation', async () => {

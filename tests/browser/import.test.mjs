@@ -148,6 +148,7 @@ describe('opening scene files', { skip }, () => {
       it(`${name}: refused with its named error, by the picker and by a drop`, async () => {
         assert.match(await refused(name, () => pick(name, text)), pattern);
         assertKept(await snapshot(), was);
+        if (name === 'not-json.json') await shoot(page, 'import-refused.png');
         const dropped = await refused(name, () => drop(name, Buffer.isBuffer(text) ? text.toString('latin1') : text));
         if (name !== 'latin1.json') assert.match(dropped, pattern); // a string in the page is UTF-16: re-encoded as UTF-8
         assertKept(await snapshot(), was);
