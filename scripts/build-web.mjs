@@ -46,6 +46,11 @@ let html = fs.readFileSync(path.join(ROOT, 'web', 'index.html'), 'utf8');
 html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/,
   `\n  <link rel="preload" href="/examples/index.json" as="fetch" crossorigin>\n  <link rel="preload" href="/examples/${first}" as="fetch" crossorigin>`);
 if (html.includes('importmap')) throw new Error('build-web: could not take the importmap out of web/index.html');
+// Chunks main.js imports statically (three.js, once other chunks loaded on first use share
+// it, e.g. the exporters): preloaded with the page, not one round trip after main.js.
+const mainOutput = Object.values(result.metafile.outputs).find((o) => o.entryPoint && o.entryPoint.endsWith('web/main.js'));
+const preloads = (mainOutput?.imports || []).filter((i) => i.kind === 'import-statement').map((i) => `\n  <link rel="modulepreload" href="./${path.basename(i.path)}">`);
+html = html.replace(/(\n\s*<\/head>)/, `${preloads.join('')}$1`);
 html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
 if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');
 fs.writeFileSync(path.join(OUT, 'index.html'), html);

@@ -21,6 +21,7 @@ import { installTestHooks } from './test-hooks.js';
 import { createBezierWiring } from './bezier-wiring.js';
 import { createShareWiring } from './share-wiring.js';
 import { createAnalysisWiring } from './analysis-wiring.js';
+import { createFileWiring } from './file-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
@@ -161,6 +162,8 @@ async function start() {
 
   bezier.connect({ state, viewer, panel, scheduler, status });
   const share = createShareWiring({ viewer, panel, status, hooks });
+  const files = createFileWiring({ panel, viewer, state, status, hooks, showScene,
+    currentTitle: () => titleEl.textContent, setNotice: (text) => { notice = text; } });
   let quiet = false; // the next solve only adds analysis data: not a user's edit
   analysis = createAnalysisWiring({
     panel, viewer, hasAnalysis: true,
@@ -186,6 +189,7 @@ async function start() {
     cameraPending = camera;
     fitPending = !camera;
     scheduler.request();
+    return sceneToken;
   }
 
   function addToolbarButtons() {
@@ -277,6 +281,7 @@ async function start() {
 
   applyFailure = (err, job) => {
     hooks.solveCount++;
+    if (files.failed(err, job)) return; // an opened file's scene: the previous one comes back
     if (linkPending) {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
       linkPending = false;
@@ -317,7 +322,7 @@ async function start() {
     if (notice) status.error(notice);
     else status.info(summary);
     notice = null;
-    share.solved(job.scene, job.grid, summary, job.edited);
+    share.solved(job.scene, job.grid, summary, job.edited || files.solved(job));
   };
 
   // A link pasted into the address bar or history navigation opens what it names;

@@ -37,8 +37,8 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let operators = null;
   let bezier = null;
   let expressions = null;
-  // Scene folders are appended as they are built; the top folders (share, grid, and those
-  // of addTopFolder) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
+  // Scene folders are appended as they are built; the top folders (share, those of
+  // keepAfterShare, grid) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
   const top = [share.folder, gridFolder.domElement];
   const fixed = [];
   const fixedToEnd = () => {
@@ -59,15 +59,15 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   return {
     gui,
 
-    /** A folder (its element) built outside that stays at the top, after those already there. */
-    addTopFolder(element) {
-      top.push(element);
-      fixedToEnd();
-    },
-
     /** Folders (their elements) built outside that stay after the scene folders. */
     keepAtEnd(...elements) {
       fixed.push(...elements);
+      fixedToEnd();
+    },
+
+    /** Folders (their elements) built outside that stay right after share (the File folder). */
+    keepAfterShare(...elements) {
+      top.splice(top.indexOf(share.folder) + 1, 0, ...elements);
       fixedToEnd();
     },
 

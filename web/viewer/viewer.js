@@ -200,6 +200,11 @@ export function createViewer(container, bezierEditing) {
       rig.afterMove();
     },
 
+    /** The three.js scene and its group of patch meshes, for the exports (web/export/). */
+    sceneGraph() {
+      return { scene, surfaces };
+    },
+
     /** Position arrays of the drawn meshes, in draw order. */
     positionArrays() {
       return surfaces.children.map((m) => m.geometry.getAttribute('position').array);

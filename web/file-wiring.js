@@ -1,0 +1,145 @@
+// Wiring of the "File" folder: exports (scene JSON, OBJ, STL, GLB, PNG; web/export/) and
+// opening a scene file by the picker or by dropping it on the page (web/import/). A file
+// that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
+// surfaces, the panel, the example id and the URL hash. For the second case the scene shown
+// before is remembered and shown again (with its camera) when the file's first solve fails.
+import { buildFileFolder } from './ui/file-controls.js';
+import { createFilePicker } from './import/file-picker.js';
+import { installFileDrop } from './import/file-drop.js';
+import { downloadFile } from './export/download.js';
+import { exportBaseName, pngFileName } from './export/file-names.js';
+
+// What runs only once a file is opened or exported loads then (the cold start stays as it was).
+const meshExport = () => import('./export/mesh-export.js');
+const pngExport = () => import('./export/png-export.js');
+const sceneExport = () => import('./export/scene-export.js');
+const sceneFile = () => import('./import/scene-file.js');
+
+const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
+const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
+
+/**
+ * { panel, viewer, state, status, hooks, showScene(scene, opts) -> token (main.js),
+ *   currentTitle() -> the title line's text, setNotice(text) (shown instead of the next
+ *   solve's summary) }.
+ * Returns { solved(job) -> true for the first good solve of an opened file (its scene is
+ * then linked in the hash like an edit), failed(err, job) -> true when the failure was an
+ * opened file's (handled here) }.
+ */
+export function createFileWiring({ panel, viewer, state, status, hooks, showScene, currentTitle, setNotice }) {
+  let pending = null; // { token, name, previous }: an opened file's scene waiting for its first solve
+  let busy = false; // one export at a time
+
+  const baseName = () => exportBaseName({ exampleId: state.exampleId, title: state.scene?.title });
+  const surfaces = () => viewer.sceneGraph().surfaces;
+
+  function refuse(name, err) {
+    const msg = `cannot open ${name}: ${messageOf(err)}`;
+    hooks.notice = msg;
+    hooks.lastFile = { action: 'open', name, error: msg };
+    status.error(msg);
+  }
+
+  async function openFile(file) {
+    const name = file.name || 'the file';
+    let read;
+    try {
+      read = await (await sceneFile()).readSceneFile(file);
+    } catch (err) {
+      refuse(name, err);
+      return;
+    }
+    // Another file still waiting for its first solve: the scene to come back to is the one before it.
+    let previous = pending ? pending.previous : null;
+    try {
+      if (!pending && state.scene) previous = { text: state.text(), exampleId: state.exampleId, title: currentTitle(), camera: viewer.getCamera() };
+    } catch {
+      previous = null; // a page state that cannot be written as JSON cannot be restored either
+    }
+    const token = showScene(read.scene, { title: read.title ? `${read.title} (${name})` : name });
+    pending = { token, name, previous };
+    hooks.lastFile = { action: 'open', name, error: null };
+  }
+
+  async function exportWith(action, make) {
+    if (busy) return;
+    busy = true;
+    const t0 = performance.now();
+    try {
+      // A large OBJ takes a second on the page's thread: say so before it starts.
+      status.info(`exporting ${action.toUpperCase()}…`);
+      await nextPaint();
+      const { data, name, type, note } = await make();
+      const bytes = downloadFile(data, name, type);
+      const ms = performance.now() - t0;
+      hooks.lastFile = { action, name, bytes, ms };
+      const line = `saved ${name} (${sizeText(bytes)})`;
+      if (note) status.warn(`${line}; ${note}`);
+      else status.info(line);
+    } catch (err) {
+      const msg = `cannot export ${action.toUpperCase()}: ${messageOf(err)}`;
+      hooks.lastFile = { action, error: msg };
+      status.error(msg);
+    } finally {
+      busy = false;
+    }
+  }
+
+  // action: obj, stl or glb; run(module of export/mesh-export.js, surfaces) -> file data.
+  function meshFile(action, run, type) {
+    return () => exportWith(action, async () => {
+      if (!surfaces().children.length) throw new Error('no surface is drawn yet');
+      return { data: await run(await meshExport(), surfaces()), name: `${baseName()}.${action}`, type };
+    });
+  }
+
+  const picker = createFilePicker(openFile);
+  installFileDrop(openFile);
+  const { folder } = buildFileFolder(panel.gui, {
+    open: () => picker.open(),
+    json: () => exportWith('json', async () => {
+      if (!state.scene) throw new Error('no scene is open');
+      const text = (await sceneExport()).sceneFileText(state.scene);
+      return { data: text, name: `${baseName()}.json`, type: 'application/json' };
+    }),
+    obj: meshFile('obj', (m, s) => m.exportObj(s), 'model/obj'),
+    stl: meshFile('stl', (m, s) => m.exportStl(s), 'model/stl'),
+    glb: meshFile('glb', (m, s) => m.exportGlb(s, baseName()), 'model/gltf-binary'),
+    png: ({ scale, transparent }) => exportWith('png', async () => {
+      const { scene } = viewer.sceneGraph();
+      const { renderPng } = await pngExport();
+      const png = await renderPng({ renderer: viewer.renderer, scene, camera: viewer.camera }, { scale, transparent });
+      viewer.render();
+      const note = png.clamped ? `reduced to ${png.width}×${png.height} (${png.scale.toFixed(2)}×): ${png.limit}` : null;
+      return { data: png.blob, name: pngFileName(baseName(), png.scale), type: 'image/png', note };
+    }),
+  });
+  panel.keepAfterShare(folder);
+
+  return {
+    solved(job) {
+      if (!pending) return false;
+      const mine = job.token === pending.token;
+      if (mine || job.token > pending.token) pending = null;
+      return mine;
+    },
+
+    failed(err, job) {
+      if (!pending || job.token !== pending.token) return false;
+      const { name, previous } = pending;
+      pending = null;
+      const msg = `cannot open ${name}: ${messageOf(err)}`;
+      hooks.lastFile = { action: 'open', name, error: msg };
+      if (!previous) {
+        hooks.notice = msg;
+        status.error(msg);
+        return true;
+      }
+      // Shown instead of the summary of the solve that brings the previous scene back.
+      setNotice(msg);
+      showScene(JSON.parse(previous.text), { exampleId: previous.exampleId, title: previous.title, camera: previous.camera });
+      return true;
+    },
+  };
+}
