@@ -42,6 +42,28 @@ val operatorOf(const Patch& p) {
   return op;
 }
 
+// Ends given by reference (scene version 3): {u0: {surface, derived: {x: [X, X_u, …], y, z}}, …}
+// with the derived conditions as text, for the page's blend panel (read-only, or detached).
+val endsOf(const Patch& p) {
+  val ends = val::object();
+  for (int end = 0; end < 2; ++end) {
+    const EndReference& e = p.ends[end];
+    if (!e.given) continue;
+    val o = val::object();
+    o.set("surface", e.surface);
+    val derived = val::object();
+    const char* axis[3] = {"x", "y", "z"};
+    for (int c = 0; c < 3; ++c) {
+      val list = val::array();
+      for (const std::string& t : e.derived[c]) list.call<void>("push", t);
+      derived.set(axis[c], list);
+    }
+    o.set("derived", derived);
+    ends.set(end ? "u1" : "u0", o);
+  }
+  return ends;
+}
+
 std::vector<float> flatten(const std::vector<Eigen::Vector3d>& pts) {
   std::vector<float> out;
   for (const auto& q : pts) out.insert(out.end(), {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())});
@@ -183,6 +205,7 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
       p.set("kind", sp.patch->kindName);
       if (sp.patch->kind == PatchKind::Pde) {
         p.set("operator", operatorOf(*sp.patch));
+        if (sp.patch->ends[0].given || sp.patch->ends[1].given) p.set("ends", endsOf(*sp.patch));
         p.set("method", methodName(sp.used));
         val methods = val::array();
         for (const std::string& m : applicableMethods(sp.patch->pde)) methods.call<void>("push", m);

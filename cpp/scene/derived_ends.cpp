@@ -164,7 +164,7 @@ void deriveEnds(Scene& scene) {
     }
     const double gap = meanGap(pos, blend.pde.v0, blend.pde.v1);
     for (int end = 0; end < 2; ++end) {
-      const EndReference& ref = blend.ends[end];
+      EndReference& ref = blend.ends[end];
       if (!ref.given) continue;
       const DerivedEnd& d = derived[end];
       // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
@@ -182,7 +182,11 @@ void deriveEnds(Scene& scene) {
         e[0] = d.P[c];
         if (n >= 2) e[1] = level >= 1 ? multiply(constant(sign * k), multiply(ref.power, d.T[c])) : subtract(pos[1][c], pos[0][c]);
         if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.C[c])) : constant(0.0);
-        for (int i = 0; i < n; ++i) slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + toText(e[i]) + ")");
+        ref.derived[c].clear();
+        for (int i = 0; i < n; ++i) {
+          ref.derived[c].push_back(toText(e[i]));
+          slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
+        }
       }
       recordJoin(scene, d, blend, ref, end);
     }

@@ -56,6 +56,9 @@ struct EndReference {
   bool surfaceScale = false;  // "scale": "surface": power times S_t itself; else ("gap") normalised
   bool flip = false;
   std::string path;     // "patches[0].ends.u0", for errors
+  // Filled by deriveEnds: per coordinate, the conditions X, X_u (, X_uu) as text in v, with
+  // the parameters' current values (what the page shows and can detach into typed ends).
+  std::array<std::vector<std::string>, 3> derived;
 };
 
 // Where a primary surface meets a PDE or Bézier patch: its t = t0 (or t1) curve is that
