@@ -137,6 +137,17 @@ function normalisePatch(p) {
     out.method = String(p.method);
     out.methods = Array.from(p.methods || [], String);
   }
+  if (p.ends) {
+    // Scene version 3: ends given by reference, with their derived conditions as text.
+    out.ends = {};
+    for (const end of ['u0', 'u1']) {
+      const e = p.ends[end];
+      if (!e) continue;
+      const derived = {};
+      for (const axis of ['x', 'y', 'z']) derived[axis] = Array.from(e.derived[axis] || [], String);
+      out.ends[end] = { surface: String(e.surface), derived };
+    }
+  }
   if (out.kind === 'bezier') {
     // Variational Bézier patch: solved and initial nets (row-major, 3 per point), the
     // guiding normals as arrows on the solved surface, and the solve's numbers.
