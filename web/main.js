@@ -22,6 +22,7 @@ import { createBezierWiring } from './bezier-wiring.js';
 import { createShareWiring } from './share-wiring.js';
 import { createAnalysisWiring } from './analysis-wiring.js';
 import { createFileWiring } from './file-wiring.js';
+import { createHistoryWiring } from './history-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
@@ -173,8 +174,14 @@ async function start() {
     },
   });
 
+  const undoRedo = createHistoryWiring({
+    toolbar, hooks, restore: restoreScene,
+    read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
+  });
+
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
+    undoRedo.commit(); // the edits of the scene being left are a step of their own
     sceneToken++;
     share.opening();
     opening = true;
@@ -189,7 +196,33 @@ async function start() {
     cameraPending = camera;
     fitPending = !camera;
     scheduler.request();
+    undoRedo.opened();
     return sceneToken;
+  }
+
+  // An undo or redo: the snapshot's scene, grid and title come back and re-solve as an edit
+  // (the hash follows); the camera stays where it is.
+  function restoreScene({ sceneText, grid, exampleId, title }) {
+    const scene = JSON.parse(sceneText);
+    const sameScene = exampleId === state.exampleId && title === titleEl.textContent;
+    sceneToken++;
+    loadToken++; // an example still loading would open over the restored state
+    opening = linkPending = fitPending = false;
+    cameraPending = null;
+    state.setScene(scene, exampleId);
+    Object.assign(state.grid, grid);
+    panel.refreshGrid();
+    viewer.resetOverlays();
+    bezier.reset();
+    hooks.exampleId = exampleId;
+    if (sameScene) panel.restoreScene(scene);
+    else {
+      analysis.newScene();
+      panel.showScene(scene);
+      gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+      titleEl.textContent = title;
+    }
+    scheduler.request();
   }
 
   function addToolbarButtons() {
@@ -268,6 +301,7 @@ async function start() {
     const edited = !opening && !quiet;
     opening = false;
     quiet = false;
+    if (edited) undoRedo.touched();
     let text;
     try {
       text = state.text(); // a cyclic or too deep object throws here
@@ -286,6 +320,7 @@ async function start() {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
       linkPending = false;
       notice = `cannot open the link: ${messageOf(err)}`;
+      undoRedo.replaceNextOpening();
       openExample(examples[0].id, { keepHash: true });
       return;
     }

@@ -9,6 +9,7 @@ import { buildExpressionFolders } from './expression-folders.js';
 import { buildShareFolder } from './share-controls.js';
 import { buildBezierFolders } from './bezier-controls.js';
 import { hasExpressions } from '../state/expression-edit.js';
+import { rememberFolders } from './folder-memory.js';
 
 const GRID_MIN = 4;
 const GRID_MAX = 256;
@@ -37,6 +38,7 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let operators = null;
   let bezier = null;
   let expressions = null;
+  let reopen = null; // after an undo or redo: the folders' open state, put back once they are rebuilt
   // Scene folders are appended as they are built; the top folders (share, those of
   // keepAfterShare, grid) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
   const top = [share.folder, gridFolder.domElement];
@@ -80,8 +82,20 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       bezier?.destroy();
       expressions?.destroy();
       operators = bezier = expressions = null;
+      reopen = null;
       buildParameters();
       fixedToEnd();
+    },
+
+    /**
+     * An undo or redo within the same scene: its parameter sliders now; the other scene
+     * folders stay until the next good solve rebuilds them, open or closed as they were.
+     */
+    restoreScene(next) {
+      scene = next;
+      reopen = rememberFolders(gui);
+      buildParameters();
+      reopen(gui);
     },
 
     /** Parameters were added or removed: rebuild their folder in place. */
@@ -91,15 +105,20 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
 
     /** After a successful solve: build the scene folders once per scene, else refresh them. */
     showSolved(patches) {
-      if (operators) {
+      if (operators && !reopen) {
         operators.update(patches);
         bezier.update(patches);
         expressions?.update(patches);
         return;
       }
+      operators?.destroy();
+      bezier?.destroy();
+      expressions?.destroy();
       operators = buildOperatorFolders(gui, patches, operatorHandlers);
       bezier = buildBezierFolders(gui, scene, patches, bezierHandlers);
-      if (hasExpressions(scene)) expressions = buildExpressionFolders(gui, scene, patches, onExpression);
+      expressions = hasExpressions(scene) ? buildExpressionFolders(gui, scene, patches, onExpression) : null;
+      reopen?.(gui);
+      reopen = null;
       fixedToEnd();
     },
 
