@@ -29,8 +29,7 @@ const MAC = typeof navigator !== 'undefined' && /Mac|iPhone|iPad/.test(navigator
 export function createHistoryWiring({ toolbar, read, restore, hooks }) {
   const history = createHistory();
   const pointers = new Set(); // pointers down anywhere on the page
-  let dirty = false; // touched since the last commit
-  let timer = 0;
+  let timer = 0; // runs from a touched() until the next commit
   let replaceNext = false; // the next opening takes the place of the current step (a link that failed)
 
   const undoButton = toolbar.add({
@@ -49,21 +48,21 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
   function commit() {
     clearTimeout(timer);
     timer = 0;
-    dirty = false;
     if (!history.current()) return;
     if (history.push(read())) showButtons();
   }
 
-  // A gesture is over when no pointer is down and no text field holds the focus.
+  // A gesture is over when no pointer is down and no text field holds the focus. At a
+  // pointer up or a field's change the state is read even if no solve has touched() yet.
+  const rested = () => pointers.size === 0 && !takesText(document.activeElement);
   function commitIfRested() {
-    if (dirty && pointers.size === 0 && !takesText(document.activeElement)) commit();
+    if (rested()) commit();
   }
 
   function apply(snapshot) {
     if (!snapshot) return;
     clearTimeout(timer);
     timer = 0;
-    dirty = false;
     restore(snapshot);
     showButtons();
   }
@@ -79,7 +78,7 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
   }
 
   window.addEventListener('pointerdown', (e) => {
-    if (dirty && !takesText(document.activeElement)) commit(); // a new gesture: the last one ended
+    if (!takesText(document.activeElement)) commit(); // a new gesture: the last one ended
     pointers.add(e.pointerId);
   }, true);
   const release = (e) => {
@@ -115,7 +114,6 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
   return {
     /** The scene or the grid changed (an edited solve): a step once the gesture rests. */
     touched() {
-      dirty = true;
       clearTimeout(timer);
       timer = setTimeout(commitIfRested, REST_MS);
     },
@@ -127,7 +125,6 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
     opened() {
       clearTimeout(timer);
       timer = 0;
-      dirty = false;
       const changed = replaceNext ? history.replace(read()) : history.push(read());
       replaceNext = false;
       if (changed) showButtons();
