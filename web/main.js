@@ -212,11 +212,11 @@ async function start() {
     state.setScene(scene, exampleId);
     Object.assign(state.grid, grid);
     panel.refreshGrid();
-    viewer.resetOverlays();
-    bezier.reset();
     hooks.exampleId = exampleId;
-    if (sameScene) panel.restoreScene(scene);
+    if (sameScene) panel.restoreScene(scene); // overlays and the edited point stay
     else {
+      viewer.resetOverlays();
+      bezier.reset();
       analysis.newScene();
       panel.showScene(scene);
       gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');

@@ -466,13 +466,16 @@ describe('undo and redo', { skip }, () => {
       assert.ok(await weight.locator('input').isVisible(), 'the region folder closed on redo');
     });
 
-    it('a control-point drag in the view is one step', async () => {
+    it('a control-point drag in the view is one step; the edited point and the overlays stay', async () => {
       await folder().locator('[data-control-point="hat"] > .title').click();
       await cp('edit').check();
       await t.frame();
       const at = await page.evaluate(() => window.__pdesurf.controlPointScreen('hat', 5, 2));
       await page.mouse.click(at.x, at.y);
       assert.deepEqual(await page.evaluate(() => window.__pdesurf.editing()), { patch: 'hat', i: 5, j: 2 });
+      await folder().locator('[data-bezier-toggle="normals"] input').check();
+      const overlays = await page.evaluate(() => window.__pdesurf.overlays());
+      assert.equal(overlays.initialNets, 1);
       // The point's z, whichever point the rebuilt editor shows.
       const zOf52 = async () => {
         if (await cp('i').inputValue() !== '5' || await cp('j').inputValue() !== '2') {
@@ -494,9 +497,18 @@ describe('undo and redo', { skip }, () => {
         },
         read: zOf52,
         minSolves: 3,
-        onUndone: () => shoot(page, 'history-point-undone.png'),
+        onUndone: async () => {
+          // The rebuilt panel keeps the edited point, the pick & drag toggle and the overlays.
+          assert.deepEqual(await page.evaluate(() => window.__pdesurf.editing()), { patch: 'hat', i: 5, j: 2 });
+          assert.equal(await cp('edit').isChecked(), true);
+          assert.deepEqual(await page.evaluate(() => window.__pdesurf.overlays()), overlays);
+          await shoot(page, 'history-point-undone.png');
+        },
       });
+      assert.equal(await cp('edit').isChecked(), true);
+      assert.deepEqual(await page.evaluate(() => window.__pdesurf.overlays()), overlays);
       await shoot(page, 'history-point-redone.png');
+      await cp('edit').uncheck();
     });
 
     it('opening a link is a step; its own λ slider is one step; undo goes back to the example', async () => {

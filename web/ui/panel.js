@@ -111,11 +111,12 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
         expressions?.update(patches);
         return;
       }
+      const carried = reopen && bezier ? bezier.ui() : null; // toggles and edited point stay through an undo
       operators?.destroy();
       bezier?.destroy();
       expressions?.destroy();
       operators = buildOperatorFolders(gui, patches, operatorHandlers);
-      bezier = buildBezierFolders(gui, scene, patches, bezierHandlers);
+      bezier = buildBezierFolders(gui, scene, patches, bezierHandlers, carried);
       expressions = hasExpressions(scene) ? buildExpressionFolders(gui, scene, patches, onExpression) : null;
       reopen?.(gui);
       reopen = null;
