@@ -2,83 +2,89 @@
 // scene or the grid becomes ONE step when its gesture ends, however many solves it caused:
 // the page calls touched() on each edited solve, and the state is committed once no pointer
 // is down, no text field is being typed in, and the changes have rested (a pointer up, a
-// field's change, or REST_MS without a new one). Opening an example or a link is a step at
-// once; the first scene opened is the base. Ctrl/Cmd+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo,
-// except in a text field or a select (their own undo stays); two toolbar buttons do the same.
+// field's change, or REST_MS without a new one). Opening an example, a link or a file is a
+// step at once (one that never draws gives its place to the next); the first scene opened is
+// the base. Ctrl/Cmd+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo, except in a text field or a
+// select (their own undo stays); two toolbar buttons do the same.
 import { createHistory } from './state/history.js';
+import { isTextField } from './keyboard-shortcuts.js';
 
 export const REST_MS = 400;
 
-const NOT_TEXT = new Set(['checkbox', 'radio', 'range', 'button', 'submit', 'reset', 'color', 'file', 'image']);
-
-/** An element that takes typed text: its keys and its Ctrl+Z are its own. */
-function takesText(el) {
-  if (!el || el.nodeType !== 1) return false;
-  if (el.isContentEditable || el.tagName === 'TEXTAREA') return true;
-  return el.tagName === 'INPUT' && !NOT_TEXT.has((el.type || 'text').toLowerCase());
-}
-const isFormField = (el) => takesText(el) || (el && el.tagName === 'SELECT');
+// Typing goes on while the focus is in a field that takes text; a select's pick is a whole change.
+const typing = () => isTextField(document.activeElement) && document.activeElement.tagName !== 'SELECT';
 
 const MAC = typeof navigator !== 'undefined' && /Mac|iPhone|iPad/.test(navigator.platform || '');
 
 /**
- * toolbar: web/ui/toolbar.js; read() -> the page state as a snapshot { sceneText, grid,
- * exampleId, title }; restore(snapshot) puts one back (and re-solves; that solve's touched()
- * is no step since it equals the current one); hooks: window.__pdesurf (gets history()).
+ * read() -> the page state as a snapshot { sceneText, grid, exampleId, title };
+ * restore(snapshot, camera) puts one back (and re-solves; that solve's touched() is no step
+ * since it equals the current one); camera is the view that step was left with, or null;
+ * camera() -> the view now; hooks: window.__pdesurf (gets history()).
  */
-export function createHistoryWiring({ toolbar, read, restore, hooks }) {
+export function createHistoryWiring({ read, restore, camera, hooks }) {
   const history = createHistory();
+  // The view each step was left with: a step of another scene comes back framed as it was left.
+  const cameras = new WeakMap();
   const pointers = new Set(); // pointers down anywhere on the page
   let timer = 0; // runs from a touched() until the next commit
-  let replaceNext = false; // the next opening takes the place of the current step (a link that failed)
+  let unshown = false; // the current step is an opening that has not drawn yet
+  let buttons = null; // { undo, redo } once addButtons() ran
 
-  const undoButton = toolbar.add({
-    action: 'undo', label: '↶', title: MAC ? 'Undo (⌘Z)' : 'Undo (Ctrl+Z)', onClick: () => undo(), group: 'history',
-  });
-  const redoButton = toolbar.add({
-    action: 'redo', label: '↷', title: MAC ? 'Redo (⇧⌘Z)' : 'Redo (Ctrl+Shift+Z or Ctrl+Y)', onClick: () => redo(), group: 'history',
-  });
   function showButtons() {
-    undoButton.disabled = !history.canUndo();
-    redoButton.disabled = !history.canRedo();
+    if (!buttons) return;
+    buttons.undo.disabled = !history.canUndo();
+    buttons.redo.disabled = !history.canRedo();
   }
-  showButtons();
 
   /** Record the page state as a step if it changed (nothing before the base). */
   function commit() {
     clearTimeout(timer);
     timer = 0;
     if (!history.current()) return;
-    if (history.push(read())) showButtons();
+    if (history.push(read())) {
+      unshown = false;
+      showButtons();
+    }
   }
 
   // A gesture is over when no pointer is down and no text field holds the focus. At a
   // pointer up or a field's change the state is read even if no solve has touched() yet.
-  const rested = () => pointers.size === 0 && !takesText(document.activeElement);
+  const rested = () => pointers.size === 0 && !typing();
   function commitIfRested() {
     if (rested()) commit();
+  }
+
+  // Before the page moves to another step: note the view the current one is left with.
+  function leave() {
+    const step = history.current();
+    const view = camera();
+    if (step && view) cameras.set(step, view);
   }
 
   function apply(snapshot) {
     if (!snapshot) return;
     clearTimeout(timer);
     timer = 0;
-    restore(snapshot);
+    unshown = false;
+    restore(snapshot, cameras.get(snapshot) ?? null);
     showButtons();
   }
 
   function undo() {
     commit(); // an edit still resting is the step undone
+    leave();
     apply(history.undo());
   }
 
   function redo() {
     commit(); // a change since the undo cuts the redo branch: then there is nothing to redo
+    leave();
     apply(history.redo());
   }
 
   window.addEventListener('pointerdown', (e) => {
-    if (!takesText(document.activeElement)) commit(); // a new gesture: the last one ended
+    if (!typing()) commit(); // a new gesture: the last one ended
     pointers.add(e.pointerId);
   }, true);
   const release = (e) => {
@@ -103,7 +109,7 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
     const wantsUndo = key === 'z' && !e.shiftKey;
     const wantsRedo = (key === 'z' && e.shiftKey) || (key === 'y' && !e.shiftKey);
     if (!wantsUndo && !wantsRedo) return;
-    if (isFormField(e.target) || isFormField(document.activeElement)) return;
+    if (isTextField(e.target) || isTextField(document.activeElement)) return;
     e.preventDefault();
     if (wantsUndo) undo();
     else redo();
@@ -112,26 +118,35 @@ export function createHistoryWiring({ toolbar, read, restore, hooks }) {
   hooks.history = () => ({ canUndo: history.canUndo(), canRedo: history.canRedo(), depth: history.depth(), redoDepth: history.redoDepth() });
 
   return {
+    /** The ↶ and ↷ buttons, in the toolbar's "history" group (web/ui/toolbar.js). */
+    addButtons(toolbar) {
+      buttons = {
+        undo: toolbar.add({ action: 'undo', label: '↶', title: MAC ? 'Undo (⌘Z)' : 'Undo (Ctrl+Z)', onClick: undo, group: 'history' }),
+        redo: toolbar.add({ action: 'redo', label: '↷', title: MAC ? 'Redo (⇧⌘Z)' : 'Redo (Ctrl+Shift+Z or Ctrl+Y)', onClick: redo, group: 'history' }),
+      };
+      showButtons();
+    },
     /** The scene or the grid changed (an edited solve): a step once the gesture rests. */
     touched() {
       clearTimeout(timer);
       timer = setTimeout(commitIfRested, REST_MS);
     },
-    /** Before another scene replaces this one: what was changed in it is a step of its own. */
-    commit() {
-      if (!replaceNext) commit();
-    },
-    /** A scene was opened (an example or a link): a step now, or the base if it is the first. */
+    /**
+     * A scene was opened (an example, a link, a file): a step now, or the base if it is the
+     * first. An opening that never drew (a link or a file whose scene does not solve, and
+     * the page then shows another) gives its place to this one.
+     */
     opened() {
       clearTimeout(timer);
       timer = 0;
-      const changed = replaceNext ? history.replace(read()) : history.push(read());
-      replaceNext = false;
+      leave(); // the view still shows the scene being left
+      const changed = unshown ? history.replace(read()) : history.push(read());
+      unshown = true;
       if (changed) showButtons();
     },
-    /** The scene just opened cannot be shown (a link that does not solve): the next opening replaces its step. */
-    replaceNextOpening() {
-      replaceNext = true;
+    /** A solve was drawn: the step shown is no longer an opening that may give its place. */
+    solved() {
+      unshown = false;
     },
     undo,
     redo,

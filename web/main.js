@@ -158,6 +158,10 @@ async function start() {
       layout.showPanel(false);
     }
   });
+  const undoRedo = createHistoryWiring({
+    hooks, restore: restoreScene, camera: () => viewer.getCamera(),
+    read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
+  });
   addToolbarButtons();
   installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
@@ -174,14 +178,8 @@ async function start() {
     },
   });
 
-  const undoRedo = createHistoryWiring({
-    toolbar, hooks, restore: restoreScene,
-    read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
-  });
-
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
-    undoRedo.commit(); // the edits of the scene being left are a step of their own
     sceneToken++;
     share.opening();
     opening = true;
@@ -201,8 +199,9 @@ async function start() {
   }
 
   // An undo or redo: the snapshot's scene, grid and title come back and re-solve as an edit
-  // (the hash follows); the camera stays where it is.
-  function restoreScene({ sceneText, grid, exampleId, title }) {
+  // (the hash follows). The camera stays within a scene; another scene comes back with the
+  // view it was left with (`camera`), or framed.
+  function restoreScene({ sceneText, grid, exampleId, title }, camera) {
     const scene = JSON.parse(sceneText);
     const sameScene = exampleId === state.exampleId && title === titleEl.textContent;
     sceneToken++;
@@ -221,6 +220,8 @@ async function start() {
       panel.showScene(scene);
       gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
       titleEl.textContent = title;
+      cameraPending = camera;
+      fitPending = !camera;
     }
     scheduler.request();
   }
@@ -228,6 +229,7 @@ async function start() {
   function addToolbarButtons() {
     toolbar.add({ action: 'gallery', label: '☰ Examples', title: 'Examples', group: 'layout', onClick: () => layout.toggleGallery() });
     toolbar.add({ action: 'panel', label: '⚙ Controls', title: 'Controls', group: 'layout', onClick: () => layout.togglePanel() });
+    undoRedo.addButtons(toolbar);
     toolbar.add({ action: 'fit', label: '⤢', title: 'Fit the view to every patch (F)', group: 'view', onClick: () => viewer.fit(true) });
     toolbar.add({ action: 'help', label: '?', title: 'Keys, gestures and docs (?)', group: 'help', onClick: () => help.toggle() });
     const mark = () => {
@@ -320,7 +322,6 @@ async function start() {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
       linkPending = false;
       notice = `cannot open the link: ${messageOf(err)}`;
-      undoRedo.replaceNextOpening();
       openExample(examples[0].id, { keepHash: true });
       return;
     }
@@ -337,6 +338,7 @@ async function start() {
       p.indices = topology.indices;
     }
     linkPending = false;
+    undoRedo.solved();
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
     analysis.solved(result, job.options);

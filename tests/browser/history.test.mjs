@@ -11,12 +11,14 @@ import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { skip, startHarness, hooks, solvedAfter, shoot, sameChecksum, ROOT, OUT_DIR } from './harness.mjs';
+import { skip, startHarness, hooks, solvedAfter, shoot, sameChecksum, exampleIndex, ROOT, OUT_DIR } from './harness.mjs';
 import { decodeFragment, encodeState } from '../../web/link/link-codec.js';
 import { REST_MS } from '../../web/history-wiring.js';
 
 const SLOT = 'patches[0].boundary.x.u0[1]'; // you2004-fig2a: "r0p*cos(v)"
 const hashOf = (page) => new URL(page.url()).hash;
+// Cameras put back through the controls (viewer.setCamera) are equal to rounding.
+const sameCamera = (a, b) => [...a.position, ...a.target].every((x, k) => Math.abs(x - [...b.position, ...b.target][k]) < 1e-9);
 
 /** Wait (≤ 3 s) until the hash is a state link whose decoded { scene, grid } satisfies ok(). */
 async function linkWhere(page, ok) {
@@ -53,6 +55,7 @@ function pageTools(page) {
 
     /** Drag a lil-gui slider with the mouse: down, `moves` steps of dx pixels (each re-solves), up. */
     async dragSlider(slider, dx, moves = 8) {
+      await slider.scrollIntoViewIfNeeded();
       const box = await slider.boundingBox();
       const y = box.y + box.height / 2;
       const x = box.x + box.width / 2;
@@ -356,7 +359,16 @@ describe('undo and redo', { skip }, () => {
       assert.deepEqual(restored.grid, { nu: 48, nv: 64 }, 'the grid step above is in the link');
     });
 
-    it('opening an example is a step: undo gives the previous scene back with its edits', async () => {
+    it('opening an example is a step: undo gives the previous scene back with its edits and its view', async () => {
+      // An orbit first: the view changes, the history does not.
+      const depth = (await t.history()).depth;
+      const canvas = await page.locator('#viewport canvas').boundingBox();
+      await page.mouse.move(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
+      await page.mouse.down();
+      await page.mouse.move(canvas.x + canvas.width / 2 - 120, canvas.y + canvas.height / 2 + 40, { steps: 6 });
+      await page.mouse.up();
+      await page.waitForTimeout(REST_MS + 200);
+      assert.equal((await t.history()).depth, depth, 'an orbit made a step');
       const left = await t.settle();
       const title = await page.locator('#scene-title').textContent();
       const h0 = await t.history();
@@ -368,7 +380,8 @@ describe('undo and redo', { skip }, () => {
       const back = await t.undo();
       assert.equal(back.exampleId, 'you2004-fig2a');
       assert.ok(sameChecksum(back.checksum, left.checksum), 'the previous scene came back without its edits');
-      assert.deepEqual(back.camera, opened.camera, 'the camera moved on undo');
+      assert.ok(sameCamera(back.camera, left.camera), 'the scene did not come back framed as it was left');
+      assert.ok(!sameCamera(opened.camera, left.camera), 'the example opened in the same view: the test shows nothing');
       assert.equal(await page.locator('#scene-title').textContent(), title);
       assert.equal(await page.locator('#gallery .gallery-item.active').getAttribute('data-example'), 'you2004-fig2a');
       assert.equal(await t.input('[data-param="k"]').inputValue(), '0.3', 'the added parameter was lost');
@@ -377,6 +390,7 @@ describe('undo and redo', { skip }, () => {
       const again = await t.redo();
       assert.equal(again.exampleId, 'you2004-fig2b');
       assert.ok(sameChecksum(again.checksum, opened.checksum));
+      assert.ok(sameCamera(again.camera, opened.camera), 'redo did not give the example its view back');
       assert.equal(await page.locator('#gallery .gallery-item.active').getAttribute('data-example'), 'you2004-fig2b');
       await t.undo();
     });
@@ -425,6 +439,78 @@ describe('undo and redo', { skip }, () => {
       assert.ok(!sameChecksum(low.checksum, top.checksum));
       assert.equal(await input.inputValue(), states[119]);
       assert.deepEqual(await t.history(), full);
+    });
+
+    it('logged no console error, page error or failed request', () => {
+      assert.deepEqual(h.problems, []);
+    });
+  });
+
+  describe('files and links, and openings that never draw', () => {
+    let page, t;
+    const exampleText = (id) => fs.readFileSync(path.join(ROOT, 'examples', `${id}.json`), 'utf8');
+    // you2004-fig2a with an unknown function: it reads, and its solve fails.
+    const broken = () => {
+      const scene = JSON.parse(exampleText('you2004-fig2a'));
+      scene.patches[0].boundary.x.u0[1] = 'r0p*cso(v)';
+      return scene;
+    };
+    const pick = (name, text) => page.locator('[data-file="input"]').setInputFiles({ name, mimeType: 'application/json', buffer: Buffer.from(text) });
+    const title = () => page.locator('#scene-title').textContent();
+    before(async () => {
+      page = await h.open('/web/#example=you2004-fig2a');
+      t = pageTools(page);
+      await t.typeNumber(t.input('[data-param="r0"]'), 2.2); // an edit, so the scene differs from the example
+      await page.waitForFunction(() => window.__pdesurf.history().depth === 1);
+    });
+
+    it('opening a file is a step; a file that does not solve leaves no step behind', async () => {
+      const edited = await t.settle();
+      const h0 = await t.history();
+      await pick('hat.json', exampleText('wu2015-fig3'));
+      await page.waitForFunction(() => window.__pdesurf.exampleId === null && /hat\.json/.test(document.getElementById('scene-title').textContent));
+      const opened = await t.settle();
+      assert.equal(opened.lastError, null);
+      assert.equal((await t.history()).depth, h0.depth + 1);
+
+      const back = await t.undo();
+      assert.equal(back.exampleId, 'you2004-fig2a');
+      assert.ok(sameChecksum(back.checksum, edited.checksum));
+      assert.equal(await t.input('[data-param="r0"]').inputValue(), '2.2');
+      assert.ok(sameCamera(back.camera, edited.camera), 'the cone came back in the hat\'s view');
+      await shoot(page, 'history-file-undone.png');
+      const again = await t.redo();
+      assert.ok(sameChecksum(again.checksum, opened.checksum));
+      assert.ok(sameCamera(again.camera, opened.camera));
+      assert.match(await title(), /\(hat\.json\)$/);
+
+      // The page shows the hat again after the broken file: the history is as it was.
+      const h1 = await t.history();
+      await pick('broken.json', JSON.stringify(broken()));
+      await page.waitForFunction(() => /^cannot open broken\.json/.test(document.getElementById('status').textContent), null, { timeout: 10_000 });
+      const kept = await t.settle();
+      assert.ok(sameChecksum(kept.checksum, opened.checksum));
+      assert.match(await title(), /\(hat\.json\)$/);
+      assert.deepEqual(await t.history(), h1, 'the file that did not solve left a step');
+      await shoot(page, 'history-file-refused.png');
+      const hat = await t.undo();
+      assert.equal(hat.exampleId, 'you2004-fig2a', 'undo after a refused file did not go back past the hat');
+    });
+
+    it('a link that does not solve: the default example takes its step', async () => {
+      const left = await t.settle();
+      const h0 = await t.history();
+      const link = await encodeState({ scene: broken(), grid: { nu: 64, nv: 64 } });
+      const shown = exampleIndex()[0].id;
+      await page.evaluate((l) => { location.hash = l; }, link);
+      await page.waitForFunction(() => /cannot open the link/.test(window.__pdesurf.notice ?? ''), null, { timeout: 10_000 });
+      const fallback = await t.settle();
+      assert.equal(fallback.exampleId, shown);
+      assert.deepEqual(await t.history(), { canUndo: true, canRedo: false, depth: h0.depth + 1, redoDepth: 0 });
+      await shoot(page, 'history-bad-link.png');
+      const back = await t.undo();
+      assert.ok(sameChecksum(back.checksum, left.checksum), 'undo went to the broken link, not the scene before it');
+      assert.equal(back.lastError, null);
     });
 
     it('logged no console error, page error or failed request', () => {
@@ -531,6 +617,7 @@ describe('undo and redo', { skip }, () => {
       const back = await t.undo();
       assert.equal(back.exampleId, 'wu2015-fig2');
       assert.ok(sameChecksum(back.checksum, left.checksum));
+      assert.ok(sameCamera(back.camera, left.camera));
       assert.match(await page.locator('#scene-title').textContent(), /^Hat with a wavy edge/);
       await shoot(page, 'history-link-undone.png');
     });

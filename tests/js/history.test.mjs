@@ -115,6 +115,17 @@ describe('undo history', () => {
     assert.equal(valueOf(h.undo()), 0);
   });
 
+  it('replace() by the step before makes the two one (an opening that never drew, undone by the page)', () => {
+    const h = createHistory();
+    h.push(snap(0));
+    h.push(snap(1));
+    h.push(snap(9)); // e.g. a file whose scene does not solve
+    assert.equal(h.replace(snap(1)), true); // the page shows the scene before it again
+    assert.equal(h.depth(), 1);
+    assert.equal(valueOf(h.current()), 1);
+    assert.equal(valueOf(h.undo()), 0);
+  });
+
   it('snapshots are frozen copies: a caller changing its object changes no step', () => {
     const h = createHistory();
     const s = snap(0);

@@ -41,11 +41,15 @@ export function createHistory({ capacity = DEFAULT_CAPACITY } = {}) {
       return true;
     },
 
-    /** Put `snapshot` in place of the current step (none yet: it becomes the base). */
+    /**
+     * Put `snapshot` in place of the current step (none yet: it becomes the base); if it
+     * then equals the step before, the two are one.
+     */
     replace(snapshot) {
       if (at < 0) return this.push(snapshot);
-      steps[at] = freeze(snapshot);
-      steps = steps.slice(0, at + 1);
+      steps = steps.slice(0, at);
+      at--;
+      this.push(snapshot);
       return true;
     },
 
