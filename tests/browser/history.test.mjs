@@ -1,9 +1,11 @@
 // Undo and redo in the page (web/history-wiring.js): every kind of scene change is ONE step
-// however many solves it causes (a slider drag, a typed value, an expression, an order, a
-// method, the grid, a control-point drag, λ, γ, region weights, adding and removing a
-// parameter, opening an example or a link); undo brings back the surface (checksum) and the
-// control's value, redo the change; 120 steps undo and redo; the keyboard works outside text
-// fields only; the toolbar buttons follow; the hash after an undo decodes to the restored state.
+// however many solves it causes (a slider drag or its arrow keys, a typed value, an
+// expression, an order, a method, the grid, a control-point drag, λ, γ, region weights,
+// adding and removing a parameter, opening an example, a link or a file); undo brings back
+// the surface (checksum) and the control's value, redo the change; an opening that never
+// draws leaves no step; another scene comes back in the view it was left with; 120 steps undo
+// and redo; the keyboard works outside text fields only; the toolbar buttons follow; the hash
+// after an undo decodes to the restored state.
 // Hooks: window.__pdesurf.history() -> { canUndo, canRedo, depth, redoDepth };
 // data-action="undo" | "redo" on the toolbar buttons (web/ui/toolbar.js).
 //   node --test tests/browser/history.test.mjs
@@ -184,6 +186,17 @@ describe('undo and redo', { skip }, () => {
       await t.settle();
       await page.waitForTimeout(REST_MS + 200);
       assert.equal((await t.history()).depth, h0.depth + 2);
+    });
+
+    it('arrow keys on a focused slider are one step once they rest', async () => {
+      const slider = param('h1p').locator('.slider');
+      await t.oneStep('slider keys', {
+        change: async () => {
+          await slider.focus();
+          for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowRight');
+        },
+        read: () => t.input('[data-param="h1p"]').inputValue(),
+      });
     });
 
     it('an operator coefficient drag is one step; the blend folder shows the old number after undo', async () => {
