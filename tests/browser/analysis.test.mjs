@@ -71,6 +71,8 @@ for (const size of SIZES) {
     });
 
     async function openFolder(name) {
+      // At phone size the panel is a sheet opened from the toolbar (web/ui/layout.js).
+      if (!(await page.locator('#panel').isVisible())) await page.locator('#toolbar [data-action="panel"]').click();
       const folder = page.locator(`#panel [data-folder="${name}"]`);
       if (await folder.evaluate((el) => el.classList.contains('closed'))) {
         await folder.locator(':scope > .title').click();
