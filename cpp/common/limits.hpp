@@ -30,5 +30,9 @@ constexpr int kBezierDegree = 16;
 // 16 with a 256² field: ~0.1 s natively from scratch); the total stops 64 such patches. At the
 // cap, 13 of them: ~1-2 s natively.
 constexpr size_t kBezierAssembly = size_t{1} << 29;
+// Nodes of one derived condition of an end given by reference (scene version 3): S_tt of a
+// 1000-character expression 64 levels deep stays far below; what exceeds it is refused
+// before it is split or printed.
+constexpr size_t kDerivedNodes = 200000;
 
 }  // namespace pdesurf::limits

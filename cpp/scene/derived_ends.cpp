@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/limits.hpp"
 #include "scene/expression_fields.hpp"
 
 namespace pdesurf {
@@ -84,7 +85,7 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
       fail(ErrorCode::InvalidField, ref.path + ".at",
            "the trimline t = " + num(t) + " at v = " + num(v) + " is outside the t_range [" + num(S.t0) + ", " + num(S.t1) + "] of '" + ref.surface + "'");
     const Eigen::Vector3d P = eval3(d.P, v), T = eval3(d.T, v), C = eval3(d.C, v);
-    if (!P.allFinite() || !T.allFinite() || (ref.continuity == Continuity::Curvature && !C.allFinite()))
+    if (!P.allFinite() || !std::isfinite(T.norm()) || (ref.continuity == Continuity::Curvature && !C.allFinite()))
       fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + num(v));
     const double p = evaluate(*ref.power, vars);
     if (!std::isfinite(p)) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + num(v));
@@ -184,6 +185,9 @@ void deriveEnds(Scene& scene) {
         if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.C[c])) : constant(0.0);
         ref.derived[c].clear();
         for (int i = 0; i < n; ++i) {
+          if (nodeCount(e[i]) > limits::kDerivedNodes)
+            fail(ErrorCode::TooLarge, ref.path, std::string("the derived condition of ") + "xyz"[c] + " has more than " +
+                                                   std::to_string(limits::kDerivedNodes) + " nodes: simplify the surface's expression");
           ref.derived[c].push_back(toText(e[i]));
           slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
         }

@@ -1,5 +1,6 @@
 // The "pde" patch: operators (one for x, y, z or one each, so mixed order is a scene choice),
 // boundary conditions by derivative order, and forces.
+#include <algorithm>
 #include <cmath>
 
 #include "scene/ends_json.hpp"
@@ -149,6 +150,16 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
   if (needed && !withOrder.contains("order") && !withOrder.contains("x") && !withOrder.contains("y") && !withOrder.contains("z")) {
     if (withOrder.empty()) withOrder = defaultOperator(needed);
     else withOrder["order"] = needed;
+    // Coefficients named for another order (b, c, d kept while an end now asks for curvature).
+    for (auto it = withOrder.begin(); it != withOrder.end(); ++it) {
+      const auto& names = namesFor(needed);
+      if (it.key() == "order" || it.key() == "coefficients" || std::find(names.begin(), names.end(), it.key()) != names.end()) continue;
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      fail(ErrorCode::InvalidField, op + "." + it.key(),
+           "the ends ask for an order-" + std::to_string(needed) + " operator, whose coefficients are " + list +
+               " (or coefficients[k]); leave the operator out for the default");
+    }
   }
   const json& o = withOrder;
   const bool perComponent = !o.contains("order");

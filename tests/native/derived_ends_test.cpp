@@ -12,6 +12,7 @@
 
 #include "analysis/join_certificate.hpp"
 #include "common/errors.hpp"
+#include "methods/method.hpp"
 #include "scene/scene.hpp"
 #include "test_util.hpp"
 
@@ -294,4 +295,17 @@ TEST_CASE("by reference: bad references are named errors naming the end and the 
   json bad = with(end("plane", "t0", "tangency"));
   bad["patches"][0]["ends"]["u0"]["continuity"] = "smooth";
   CHECK(errorOf(bad).find("InvalidField: patches[0].ends.u0.continuity") == 0);
+}
+
+TEST_CASE("by reference: blends between closed-form families stay closed form") {
+  for (const char* id : {"ref-sphere-fillet", "ref-offset-cylinders-g2", "ref-torus-plane"}) {
+    CAPTURE(id);
+    const Scene scene = parseScene(readText(examplePath(std::string(id) + ".json")));
+    const auto solved = solveScene(scene);
+    CHECK(methodName(solved.front().used) == "closed");
+    CHECK(boundaryError(solved.front().patch->pde, solved.front().surface) < 1e-12);
+  }
+  // The square root of the T-joint's pipe is no family: the general methods take over.
+  const Scene tjoint = parseScene(readText(examplePath("ref-pipe-tjoint.json")));
+  CHECK(methodName(solveScene(tjoint).front().used) != "closed");
 }

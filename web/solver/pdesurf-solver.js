@@ -102,21 +102,6 @@ function solveWith(Module, scene, { nu = 64, nv = 64, curvature = false, joins =
   return out;
 }
 
-// Ends given by reference (scene version 3): per end the surface named and the derived
-// conditions as expression text with the parameters' current values,
-// { u0: { surface, derived: { x: [X, X_u, (X_uu)], y, z } }, u1: … } (the page's blend panel).
-function normaliseEnds(ends) {
-  const out = {};
-  for (const end of ['u0', 'u1']) {
-    const e = ends[end];
-    if (!e) continue;
-    const derived = {};
-    for (const axis of ['x', 'y', 'z']) derived[axis] = Array.from(e.derived?.[axis] || [], String);
-    out[end] = { surface: String(e.surface), derived };
-  }
-  return out;
-}
-
 // The binding already returns copies (slices of the wasm heap), so the arrays are
 // owned here; only check their types.
 function normalisePatch(p) {
@@ -152,7 +137,17 @@ function normalisePatch(p) {
     out.method = String(p.method);
     out.methods = Array.from(p.methods || [], String);
   }
-  if (p.ends) out.ends = normaliseEnds(p.ends);
+  if (p.ends) {
+    // Scene version 3: ends given by reference, with their derived conditions as text.
+    out.ends = {};
+    for (const end of ['u0', 'u1']) {
+      const e = p.ends[end];
+      if (!e) continue;
+      const derived = {};
+      for (const axis of ['x', 'y', 'z']) derived[axis] = Array.from(e.derived[axis] || [], String);
+      out.ends[end] = { surface: String(e.surface), derived };
+    }
+  }
   if (out.kind === 'bezier') {
     // Variational Bézier patch: solved and initial nets (row-major, 3 per point), the
     // guiding normals as arrows on the solved surface, and the solve's numbers.
