@@ -211,7 +211,7 @@ describe('attach and detach', () => {
     assert.throws(() => s.attachEnd('blend', 'u0'), /already/);
   });
 
-  it('attach defaults: the first surface when none meets the end, its `meets.at`, position on order 2', () => {
+  it('attach defaults: the surface that meets the end at its `meets.at`, else one the other end does not meet; position on order 2', () => {
     const scene = { version: 2, patches: [
       { name: 'b', kind: 'pde' },
       { name: 'first', kind: 'surface' },
@@ -219,6 +219,8 @@ describe('attach and detach', () => {
     ] };
     assert.deepEqual(attachDefaults(scene, scene.patches[0], 'u0', ORDERS4), { surface: 'second', at: 't1', continuity: 'tangency', power: 1 });
     assert.deepEqual(attachDefaults(scene, scene.patches[0], 'u1', { x: 2, y: 4, z: 4 }), { surface: 'first', at: 't0', continuity: 'position', power: 1 });
+    const blend = { name: 'b', kind: 'pde', ends: { u0: { surface: 'first', at: 't0' } } };
+    assert.equal(attachDefaults(scene, blend, 'u1', ORDERS4).surface, 'second', 'not the surface the other end meets');
     assert.throws(() => attachDefaults({ patches: [] }, { name: 'b' }, 'u0'), /no "surface" patch/);
   });
 

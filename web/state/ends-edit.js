@@ -150,14 +150,16 @@ export function neededOrder(patch) {
 
 /**
  * What "attach" gives a typed end: the first surface whose `meets` names this end (at its
- * `meets.at`), else the first surface at t0; tangency (position on a coordinate of order 2,
+ * `meets.at`), else the first surface the other end does not meet (a blend joins two), else
+ * the first surface, at t0; tangency (position on a coordinate of order 2,
  * which tangency would exceed), power 1. orders: the resolved { x, y, z } orders, if known.
  */
 export function attachDefaults(scene, patch, end, orders = {}) {
   checkEnd(end);
   const surfaces = surfacePatches(scene);
   const meeting = surfaces.find((p) => isObject(p.meets) && p.meets.patch === patch.name && p.meets.end === end);
-  const surface = meeting || surfaces[0];
+  const other = endOf(patch, end === 'u0' ? 'u1' : 'u0')?.surface;
+  const surface = meeting || surfaces.find((p) => p.name !== other) || surfaces[0];
   if (!surface) throw new Error('the scene has no "surface" patch to attach to');
   const lowest = Math.min(...AXES.map((axis) => (Number.isFinite(orders?.[axis]) ? orders[axis] : 4)));
   return {
