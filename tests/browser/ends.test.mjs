@@ -9,7 +9,10 @@
 //   PDESURF_WASM_DIR=build/wasm3 node --test tests/browser/ends.test.mjs
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { skip, startHarness, hooks, solvedAfter, shoot, viewStats, sameChecksum, waitReady } from './harness.mjs';
+import fs from 'node:fs';
+import path from 'node:path';
+import { skip, startHarness, hooks, solvedAfter, shoot, viewStats, sameChecksum, waitReady, ROOT } from './harness.mjs';
+import { encodeState } from '../../web/link/link-codec.js';
 
 const TAU_INSIDE = 'th0 + 0.1 + 0.1*sin(2*v)'; // within the sphere's t_range [th0, pi - 0.05]
 const TAU_OUTSIDE = 'th0 + 0.1*sin(2*v)'; // dips below th0: outside it
@@ -269,6 +272,21 @@ describe('ends by reference in the page', { skip }, () => {
     assert.equal(await page.locator('#panel [data-functions="blend"] [data-expr]').count(), 9, 'u1\'s typed fields stayed');
     assert.equal(await derived('blend.u1', 'z.0').inputValue(), '2');
     await look('blend.u1', 'ends-attach-v2.png');
+  });
+
+  it('shows a surface\'s name as text, never as markup', async () => {
+    const scene = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'ref-sphere-fillet.json'), 'utf8'));
+    const name = '<img src=x onerror="window.__pwned=1">&amp;';
+    scene.patches[2].name = name;
+    scene.patches[0].ends.u1.surface = name;
+    const hostile = await h.open(`/web/#${await encodeState({ scene })}`);
+    assert.equal(await hostile.evaluate(() => window.__pdesurf.lastError), null);
+    const select = hostile.locator('#panel [data-end="fillet.u1"] [data-end-field="surface"] select');
+    assert.equal(await select.evaluate((s) => s.options[s.selectedIndex].textContent), name);
+    assert.equal(await hostile.locator('#panel [data-end="fillet.u1"] [data-end-field="surface"] .display').textContent(), name);
+    assert.equal(await hostile.locator('#panel img').count(), 0);
+    assert.equal(await hostile.evaluate(() => window.__pwned), undefined);
+    await hostile.close();
   });
 
   it('on a phone (390×844) the Controls sheet reaches the Ends folder', async () => {
