@@ -22,6 +22,7 @@ import { createBezierWiring } from './bezier-wiring.js';
 import { createShareWiring } from './share-wiring.js';
 import { createAnalysisWiring } from './analysis-wiring.js';
 import { createFileWiring } from './file-wiring.js';
+import { createHistoryWiring } from './history-wiring.js';
 
 const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
@@ -187,6 +188,10 @@ async function start() {
       layout.showPanel(false);
     }
   });
+  const undoRedo = createHistoryWiring({
+    hooks, restore: restoreScene, camera: () => viewer.getCamera(),
+    read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
+  });
   addToolbarButtons();
   installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
@@ -219,12 +224,42 @@ async function start() {
     cameraPending = camera;
     fitPending = !camera;
     scheduler.request();
+    undoRedo.opened();
     return sceneToken;
+  }
+
+  // An undo or redo: the snapshot's scene, grid and title come back and re-solve as an edit
+  // (the hash follows). The camera stays within a scene; another scene comes back with the
+  // view it was left with (`camera`), or framed.
+  function restoreScene({ sceneText, grid, exampleId, title }, camera) {
+    const scene = JSON.parse(sceneText);
+    const sameScene = exampleId === state.exampleId && title === titleEl.textContent;
+    sceneToken++;
+    loadToken++; // an example still loading would open over the restored state
+    opening = linkPending = fitPending = false;
+    cameraPending = null;
+    state.setScene(scene, exampleId);
+    Object.assign(state.grid, grid);
+    panel.refreshGrid();
+    hooks.exampleId = exampleId;
+    if (sameScene) panel.restoreScene(scene); // overlays and the edited point stay
+    else {
+      viewer.resetOverlays();
+      bezier.reset();
+      analysis.newScene();
+      panel.showScene(scene);
+      gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+      titleEl.textContent = title;
+      cameraPending = camera;
+      fitPending = !camera;
+    }
+    scheduler.request();
   }
 
   function addToolbarButtons() {
     toolbar.add({ action: 'gallery', label: '☰ Examples', title: 'Examples', group: 'layout', onClick: () => layout.toggleGallery() });
     toolbar.add({ action: 'panel', label: '⚙ Controls', title: 'Controls', group: 'layout', onClick: () => layout.togglePanel() });
+    undoRedo.addButtons(toolbar);
     toolbar.add({ action: 'fit', label: '⤢', title: 'Fit the view to every patch (F)', group: 'view', onClick: () => viewer.fit(true) });
     toolbar.add({ action: 'help', label: '?', title: 'Keys, gestures and docs (?)', group: 'help', onClick: () => help.toggle() });
     const mark = () => {
@@ -298,6 +333,7 @@ async function start() {
     const edited = !opening && !quiet;
     opening = false;
     quiet = false;
+    if (edited) undoRedo.touched();
     let text;
     try {
       text = state.text(); // a cyclic or too deep object throws here
@@ -332,6 +368,7 @@ async function start() {
       p.indices = topology.indices;
     }
     linkPending = false;
+    undoRedo.solved();
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
     analysis.solved(result, job.options);

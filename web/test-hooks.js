@@ -27,6 +27,7 @@ export function installTestHooks(getPositionArrays, getCamera = () => null, extr
     notice: null, // the last notice shown instead of a solve summary (bad link, unknown example)
     lastLink: null, // the URL the last "copy link" produced
     lastFile: null, // the last export or opened file: { action, name, bytes?, ms?, error? } (web/file-wiring.js)
+    history: () => null, // { canUndo, canRedo, depth, redoDepth }, set by web/history-wiring.js
     checksum: () => checksumOf(getPositionArrays()),
     vertexCount: () => getPositionArrays().reduce((n, a) => n + a.length / 3, 0),
     camera: () => getCamera(), // { position, target } as a link stores it

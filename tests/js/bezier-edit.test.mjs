@@ -55,6 +55,9 @@ describe('λ weights by region', () => {
   it('reads slider values back as region means, clamped; anything else reads as 1', () => {
     const regions = [0, 0.5, 2, 3, 10, 1, 7, 8, 9];
     assert.deepEqual(regionValuesFrom(regionWeightsArray(16, 16, regions), 16, 16), regions);
+    // Slider steps of 0.1 come back exactly (a plain mean gives 9.800000000000006 and 0.2999999999999999).
+    const tenths = [9.8, 0.3, 0.7, 1.1, 2.9, 9.9, 0.1, 4.4, 6.6];
+    assert.deepEqual(regionValuesFrom(regionWeightsArray(16, 16, tenths), 16, 16), tenths);
     const w = regionWeightsArray(2, 2, [1, 1, 1, 1, 1, 1, 1, 1, 1]);
     w[0] = 50; // clamped to the slider's 10
     w[4] = -3; // and 0

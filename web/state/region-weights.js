@@ -71,7 +71,10 @@ export function regionValuesFrom(weights, np, mp) {
       counts[r]++;
     }
   }
-  return values.map((v, r) => (counts[r] ? Math.min(WEIGHT_MAX, Math.max(WEIGHT_MIN, sums[r] / counts[r])) : v));
+  // A sum of equal weights over their count is not always that weight (9.8 comes back as
+  // 9.800000000000006): 12 digits give a region's own value back, as its slider showed it.
+  const mean = (r) => Number((sums[r] / counts[r]).toPrecision(12));
+  return values.map((v, r) => (counts[r] ? Math.min(WEIGHT_MAX, Math.max(WEIGHT_MIN, mean(r))) : v));
 }
 
 /**

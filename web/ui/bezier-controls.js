@@ -25,7 +25,8 @@ const readout = (x) => (Number.isFinite(x) ? x.toPrecision(6) : '—');
 // The scene gives no range: [0, max(100, 2v)] keeps the value mid-slider and 0 reachable.
 const rangeFor = (v) => [0, Math.max(100, 2 * Math.abs(v))];
 
-function buildFolder(gui, patch, solved, h) {
+// carried: { shown, point } of the folder this one replaces (a rebuild after an undo), or undefined.
+function buildFolder(gui, patch, solved, h, carried) {
   const name = patch.name;
   const folder = gui.addFolder(escapeHtml(`Bézier “${name}”`));
   folder.domElement.dataset.bezier = name;
@@ -51,7 +52,7 @@ function buildFolder(gui, patch, solved, h) {
 
   const shown = {};
   for (const [key, label] of TOGGLES) {
-    shown[key] = false;
+    shown[key] = Boolean(carried?.shown[key]);
     folder.add(shown, key).name(escapeHtml(label)).onChange((on) => h.onOverlay(name, key, on))
       .domElement.dataset.bezierToggle = key;
   }
@@ -65,6 +66,7 @@ function buildFolder(gui, patch, solved, h) {
     onEditMode: (on) => h.onEditMode(name, on, point.current()),
     onSelect: (i, j) => h.onSelect(name, i, j),
     onCoordinate: (i, j, axis, value) => h.onCoordinate(name, i, j, axis, value),
+    start: carried?.point,
   });
 
   const view = {
@@ -76,6 +78,8 @@ function buildFolder(gui, patch, solved, h) {
       for (const c of readouts) c.updateDisplay();
       point.refresh(s.gamma);
     },
+    /** What the user set that is not in the scene: the overlay toggles and the edited point. */
+    ui: () => ({ shown: { ...shown }, point: point.current() }),
   };
   view.update(solved);
   return view;
@@ -86,14 +90,15 @@ function buildFolder(gui, patch, solved, h) {
  *   onOverlay(patch, key, on); onNumber(patch, 'lambda' | 'gamma', value);
  *   onRegionWeights(patch, regions); pointOf(patch, i, j) -> [x, y, z];
  *   onEditMode(patch, on, { i, j }); onSelect(patch, i, j); onCoordinate(patch, i, j, axis, value)
- * Returns { update(solved), select(patch, i, j), setEditMode(patch, on), refreshPoint(patch), destroy() }.
+ * carried: the ui() of the folders these replace for the same scene (after an undo), or null.
+ * Returns { update(solved), select(patch, i, j), setEditMode(patch, on), refreshPoint(patch), ui(), destroy() }.
  */
-export function buildBezierFolders(gui, scene, solvedPatches, handlers) {
+export function buildBezierFolders(gui, scene, solvedPatches, handlers, carried = null) {
   const views = new Map();
   for (const patch of Array.isArray(scene?.patches) ? scene.patches : []) {
     if (!patch || patch.kind !== 'bezier' || !netSizeOf(patch)) continue;
     const solved = solvedPatches.find((p) => p.name === patch.name && p.kind === 'bezier');
-    if (solved) views.set(patch.name, buildFolder(gui, patch, solved, handlers));
+    if (solved) views.set(patch.name, buildFolder(gui, patch, solved, handlers, carried?.get(patch.name)));
   }
   return {
     update(patches) {
@@ -107,6 +112,10 @@ export function buildBezierFolders(gui, scene, solvedPatches, handlers) {
     },
     refreshPoint(name) {
       views.get(name)?.point.refresh();
+    },
+    /** patch name -> { shown, point }: handed to the folders that replace these. */
+    ui() {
+      return new Map([...views].map(([name, v]) => [name, v.ui()]));
     },
     destroy() {
       for (const v of views.values()) v.folder.destroy();

@@ -13,16 +13,22 @@ function roleText(role, gamma) {
   return gamma > 0 ? 'free: pulls the surface through γ' : 'free: no effect while γ = 0';
 }
 
+const within = (k, n, fallback) => (Number.isInteger(k) && k >= 0 && k < n ? k : fallback);
+
 /**
  * rows, cols: the net's size; energy: "membrane" | "thin-plate"; pointOf(i, j) -> [x, y, z];
- * onEditMode(on); onSelect(i, j); onCoordinate(i, j, axis, value).
+ * onEditMode(on); onSelect(i, j); onCoordinate(i, j, axis, value); start: { i, j, edit } of
+ * the editor this one replaces (a rebuild after an undo), if any.
  * Returns { select(i, j), setEditMode(on), refresh(gamma?), current() }.
  */
-export function buildControlPointControls(parent, { patchName, rows, cols, energy, pointOf, onEditMode, onSelect, onCoordinate }) {
+export function buildControlPointControls(parent, { patchName, rows, cols, energy, pointOf, onEditMode, onSelect, onCoordinate, start = null }) {
   const folder = parent.addFolder(escapeHtml('Edit the initial net'));
   folder.domElement.dataset.controlPoint = patchName;
   // Start in the middle of the net: an interior point, the one most edits begin with.
-  const model = { edit: false, i: rows >> 1, j: cols >> 1, role: '', x: 0, y: 0, z: 0 };
+  const model = {
+    edit: Boolean(start?.edit), i: within(start?.i, rows, rows >> 1), j: within(start?.j, cols, cols >> 1),
+    role: '', x: 0, y: 0, z: 0,
+  };
   let gamma = 0;
 
   const hook = (ctrl, name) => {

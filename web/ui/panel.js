@@ -10,6 +10,7 @@ import { buildEndFolders } from './end-controls.js';
 import { buildShareFolder } from './share-controls.js';
 import { buildBezierFolders } from './bezier-controls.js';
 import { hasExpressions } from '../state/expression-edit.js';
+import { rememberFolders } from './folder-memory.js';
 
 const GRID_MIN = 4;
 const GRID_MAX = 256;
@@ -40,6 +41,7 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let expressions = null;
   let ends = null;
   let lastSolved = []; // the patches of the last good solve (folders rebuilt between solves use them)
+  let reopen = null; // after an undo or redo: the folders' open state, put back once they are rebuilt
   // Scene folders are appended as they are built; the top folders (share, those of
   // keepAfterShare, grid) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
   const top = [share.folder, gridFolder.domElement];
@@ -96,8 +98,20 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       ends?.destroy();
       operators = bezier = expressions = ends = null;
       lastSolved = [];
+      reopen = null;
       buildParameters();
       fixedToEnd();
+    },
+
+    /**
+     * An undo or redo within the same scene: its parameter sliders now; the other scene
+     * folders stay until the next good solve rebuilds them, open or closed as they were.
+     */
+    restoreScene(next) {
+      scene = next;
+      reopen = rememberFolders(gui);
+      buildParameters();
+      reopen(gui);
     },
 
     /** Parameters were added or removed: rebuild their folder in place. */
@@ -108,28 +122,38 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
     /** After a successful solve: build the scene folders once per scene, else refresh them. */
     showSolved(patches) {
       lastSolved = patches;
-      if (operators) {
+      if (operators && !reopen) {
         operators.update(patches);
         ends?.update(patches);
         bezier.update(patches);
         expressions?.update(patches);
         return;
       }
+      const carried = reopen && bezier ? bezier.ui() : null; // toggles and edited point stay through an undo
+      operators?.destroy();
+      bezier?.destroy();
+      expressions?.destroy();
+      ends?.destroy();
       operators = buildOperatorFolders(gui, patches, operatorHandlers);
       ends = buildEnds();
-      bezier = buildBezierFolders(gui, scene, patches, bezierHandlers);
+      bezier = buildBezierFolders(gui, scene, patches, bezierHandlers, carried);
       expressions = buildExpressions();
+      reopen?.(gui);
+      reopen = null;
       fixedToEnd();
     },
 
     /**
      * An end was attached or detached: its Ends folder and the blend's function fields
-     * change shape at once (with the last solve's orders and derived texts), in place.
+     * change shape at once (with the last solve's orders and derived texts), in place and
+     * open or closed as they were.
      */
     rebuildEnds() {
       if (!operators) return; // not built yet: the first solve builds them
+      const reopenNow = rememberFolders(gui);
       ends = replaceFolders(ends, buildEnds);
       expressions = replaceFolders(expressions, buildExpressions);
+      reopenNow(gui);
       fixedToEnd();
     },
 
