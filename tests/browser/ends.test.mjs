@@ -2,8 +2,8 @@
 // the scene's ends and the conditions the solver derived; continuity, power, flip and the
 // trimline re-solve; a trimline outside the surface is a named error inline while the
 // surfaces stay; editing the primary surface re-derives; detach types the derived texts
-// (same surface), attach gives the end back by reference; a version-2 scene's typed end can
-// be attached; the phone layout reaches the folder. Screenshots: build/browser/ends-*.png.
+// (same surface), attach gives the end back by reference, one undo takes a detach back; a
+// version-2 scene's typed end can be attached; the phone layout reaches the folder. Screenshots: build/browser/ends-*.png.
 // Hooks: data-ends, data-end, data-end-field, data-derived (end-controls.js), data-expr
 // (expression-field.js), data-end-note (expression-folders.js), data-order (axis-controls.js).
 //   PDESURF_WASM_DIR=build/wasm3 node --test tests/browser/ends.test.mjs
@@ -227,6 +227,43 @@ describe('ends by reference in the page', { skip }, () => {
     assert.deepEqual(await derivedTexts('fillet.u1'), texts);
     assert.equal(await page.locator('#panel [data-expr^="patches[0].boundary"]').count(), 0);
     await look('fillet.u1', 'ends-attached.png');
+  });
+
+  it('one undo takes a detach back, one redo does it again; a continuity change is one step too', async () => {
+    const original = await open('ref-sphere-fillet');
+    const history = () => page.evaluate(() => window.__pdesurf.history());
+    const stepped = async (depth) => page.waitForFunction((d) => window.__pdesurf.history().depth > d, depth, { timeout: 5000 });
+    const texts = await derivedTexts('fillet.u1');
+    let { depth } = await history();
+    await change(() => control('fillet.u1', 'detach').locator('button').click());
+    await stepped(depth);
+    ({ depth } = await history());
+    assert.equal(await page.locator('#panel [data-expr^="patches[0].boundary"]').count(), 6);
+
+    const undone = await change(() => page.locator('#toolbar [data-action="undo"]').click());
+    assert.equal(undone.lastError, null);
+    assert.ok(sameChecksum(undone.checksum, original.checksum));
+    assert.equal(await page.locator('#panel [data-expr^="patches[0].boundary"]').count(), 0, 'the typed fields stayed');
+    assert.equal(await page.locator('#panel [data-functions="fillet"] [data-end-note]').count(), 2);
+    assert.deepEqual(await derivedTexts('fillet.u1'), texts);
+    assert.equal(await shownOption('fillet.u1', 'surface'), 'sphere');
+    assert.equal((await history()).depth, depth - 1, 'the detach was more than one step');
+    await look('fillet.u1', 'ends-undo-detach.png');
+
+    await change(() => page.locator('#toolbar [data-action="redo"]').click());
+    assert.equal(await page.locator('#panel [data-expr^="patches[0].boundary"]').count(), 6);
+    assert.equal(await control('fillet.u1', 'attach').count(), 1);
+    await change(() => page.locator('#toolbar [data-action="undo"]').click());
+
+    // A continuity change (which also raises the orders) is one step.
+    ({ depth } = await history());
+    await choose('fillet.u0', 'continuity', 'curvature (G2)');
+    await stepped(depth);
+    assert.equal((await history()).depth, depth + 1);
+    const back = await change(() => page.locator('#toolbar [data-action="undo"]').click());
+    assert.ok(sameChecksum(back.checksum, original.checksum));
+    assert.equal(await shownOption('fillet.u0', 'continuity'), 'tangency (G1)');
+    assert.equal(await end('fillet.u0').locator('[data-derived]').count(), 6);
   });
 
   it('detaching both ends leaves a typed blend with explicit orders', async () => {
