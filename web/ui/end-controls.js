@@ -10,15 +10,13 @@
 // .end-error for a solver message about the end.
 import { escapeHtml } from './html-text.js';
 import { buildExpressionField } from './expression-field.js';
+import { buildPowerControl } from './power-control.js';
+import { buildDerivedFields } from './derived-fields.js';
 import {
   ENDS, TRIMLINES, ISO_LINES, CONTINUITIES, SCALES,
-  readEnd, canHaveEnds, surfaceNames, powerValue, curveFromIsoLine, endErrorField,
+  readEnd, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField,
 } from '../state/ends-edit.js';
-import { AXES } from '../state/expression-edit.js';
 
-export const POWER_RANGE = [0.1, 4];
-
-const PRIMES = ['', 'ᵤ', 'ᵤᵤ', 'ᵤᵤᵤ'];
 const TRIMLINE_LABELS = { t0: 't0 (iso-line)', t1: 't1 (iso-line)', curve: 'curve t = τ(v)' };
 const CONTINUITY_LABELS = { position: 'position (G0)', tangency: 'tangency (G1)', curvature: 'curvature (G2)' };
 const at01 = (end) => (end === 'u0' ? 0 : 1);
@@ -35,25 +33,12 @@ function optionsOf(values, labels = {}, current) {
   return out;
 }
 
-function note(parent, text, cls = 'end-note') {
+function note(parent, text) {
   const el = document.createElement('div');
-  el.className = cls;
+  el.className = 'end-note';
   el.textContent = text; // scene names: never markup
   parent.$children.append(el);
   return el;
-}
-
-/** A small button inside a controller's row (like the parameter remove buttons). */
-function rowButton(ctrl, { text, title, hook, onClick }) {
-  const button = document.createElement('button');
-  button.type = 'button';
-  button.className = 'end-row-button';
-  button.textContent = text;
-  button.title = title;
-  button.dataset.endField = hook;
-  button.addEventListener('click', onClick);
-  (ctrl.element ?? ctrl.domElement).querySelector('.widget').after(button);
-  return button;
 }
 
 /**
@@ -123,66 +108,25 @@ export function buildEndFolders(gui, scene, solved, handlers) {
     }
     select(view, model, 'continuity', optionsOf(CONTINUITIES, CONTINUITY_LABELS), 'continuity',
       'G0 meets the surface, G1 matches its tangent plane, G2 its curvature too (order 6)', (c) => send(view, 'continuity', c));
-    addPower(view, model, e);
+    const power = buildPowerControl(folder, {
+      scene, power: e.power, path: `patches[${view.index}].ends.${end}.power`,
+      onPower: (value, typed) => send(view, 'power', value, typed), onKind: () => fill(view),
+    });
+    view.powerField = power.field;
+    view.syncPower = power.sync;
     select(view, model, 'scale', optionsOf(SCALES), 'scale',
       'gap: power 1 gives a tangent as long as the mean gap between the two ends; surface: the surface\'s own speed in t', (s) => send(view, 'scale', s));
     const flip = folder.add(model, 'flip').name(escapeHtml('flip')).onChange((on) => send(view, 'flip', on));
     flip.domElement.dataset.endField = 'flip';
     flip.domElement.title = 'reverse the direction across the join (the blend folds back over the surface)';
-    addDerived(view, e.surface);
+    view.derived = buildDerivedFields(folder, { end, surface: e.surface });
+    addDetach(view);
     showDerived(view, view.current);
     setStale(view, view.stale);
   }
 
-  function addPower(view, model, e) {
-    const { folder } = view;
-    const title = 'how far the blend carries the surface\'s direction (1: a tangent as long as the gap)';
-    if (typeof e.power === 'number') {
-      const ctrl = folder.add(model, 'power', ...POWER_RANGE).name(escapeHtml('power')).onChange((p) => send(view, 'power', p));
-      ctrl.domElement.dataset.endField = 'power';
-      ctrl.domElement.title = title;
-      rowButton(ctrl, {
-        text: 'ƒ', hook: 'power-expression', title: 'write the power as an expression (a parameter\'s name, or a function of v)',
-        onClick: () => {
-          send(view, 'power', String(model.power));
-          fill(view);
-        },
-      });
-      return;
-    }
-    view.powerField = buildExpressionField(folder, {
-      label: 'power', title: `${title}; an expression of parameters and v`,
-      path: `patches[${view.index}].ends.${view.end}.power`, value: e.power, onEdit: (text) => send(view, 'power', text, true),
-    });
-    view.powerField.element.dataset.endField = 'power';
-    const button = rowButton(view.powerField, {
-      text: '#', hook: 'power-number', title: '',
-      onClick: () => {
-        const value = powerValue(scene, readEnd(view.patch, view.end).power);
-        if (value === null) return;
-        send(view, 'power', value);
-        fill(view);
-      },
-    });
-    // Only a number or a parameter's name has one current value here.
-    const sync = () => {
-      const value = powerValue(scene, readEnd(view.patch, view.end)?.power);
-      button.disabled = value === null;
-      button.title = value === null
-        ? 'only a number or a parameter\'s name can become a slider'
-        : `replace by its current value (${value}) with a slider of its own`;
-    };
-    sync();
-    button.addEventListener('mouseenter', sync);
-    view.syncPower = sync;
-  }
-
-  function addDerived(view, surface) {
+  function addDetach(view) {
     const { folder, patch, end } = view;
-    const box = folder.addFolder(escapeHtml('derived (read-only)'));
-    box.domElement.classList.add('derived-folder');
-    box.domElement.title = `The conditions derived from “${surface}”, with the parameters' current values; they follow every solve.`;
-    view.derived = { box, fields: [], model: {}, key: '' };
     const detach = folder.add({ detach: () => {
       if (view.current && !view.stale) handlers.onDetach(patch.name, end, view.current);
     } }, 'detach').name(escapeHtml('detach: type these conditions'));
@@ -192,42 +136,9 @@ export function buildEndFolders(gui, scene, solved, handlers) {
     view.detach = detach;
   }
 
-  // The solver's derived texts into the read-only fields (rebuilt when their count changes).
   function showDerived(view, derived) {
     view.current = derived;
-    if (!view.derived) return;
-    const d = view.derived;
-    const key = derived ? AXES.map((axis) => derived[axis].length).join(',') : '';
-    if (key !== d.key) {
-      for (const f of d.fields) f.destroy();
-      d.fields = [];
-      d.model = {};
-      d.key = key;
-      if (derived) {
-        for (const axis of AXES) {
-          derived[axis].forEach((_, k) => {
-            const id = `${axis}.${k}`;
-            d.model[id] = '';
-            const ctrl = d.box.add(d.model, id).name(escapeHtml(`${axis}${PRIMES[k] ?? `^(${k})`}(${at01(view.end)})`));
-            ctrl.domElement.dataset.derived = id;
-            ctrl.domElement.classList.add('derived');
-            // Read-only rather than disabled: the text can still be scrolled, selected and
-            // copied, and its tooltip (the whole text) shows.
-            const input = ctrl.domElement.querySelector('input');
-            input.readOnly = true;
-            input.spellcheck = false;
-            d.fields.push(ctrl);
-          });
-        }
-      }
-    }
-    for (const ctrl of d.fields) {
-      const [axis, k] = ctrl.domElement.dataset.derived.split('.');
-      const text = derived[axis][Number(k)];
-      d.model[ctrl.domElement.dataset.derived] = text;
-      ctrl.updateDisplay();
-      ctrl.domElement.querySelector('input').title = text; // the whole text, however narrow the field
-    }
+    view.derived?.show(derived);
   }
 
   function setStale(view, stale) {
