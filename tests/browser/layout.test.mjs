@@ -53,7 +53,14 @@ async function openAllFolders(page) {
     return -1;
   });
   assert.equal(left, 0, 'folders that do not stay open');
-  await page.waitForTimeout(300); // lil-gui animates a folder's opening
+  await settled(page);
+}
+
+// No CSS transition or animation running (lil-gui's folders, the drawers): hit tests see the end state.
+// lil-gui starts a folder's transition a frame after the click: let two frames pass first.
+async function settled(page) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+  await page.waitForFunction(() => document.getAnimations().every((a) => a.playState !== 'running'), null, { timeout: 10_000 });
 }
 
 // The panel's controls: each controller's widget (input, button, select, slider).
@@ -93,6 +100,7 @@ describe('layout at every screen size', { skip }, () => {
         assert.equal(await page.locator('#panel').isVisible(), false, 'the panel covers the view before it is asked for');
         await page.locator('[data-action="panel"]').click();
         assert.ok(await page.locator('#panel').isVisible());
+        await settled(page);
         assert.ok(await canvasShare(page) >= 0.35, 'with the panel open the view is too small');
       }
       await openAllFolders(page);
