@@ -143,12 +143,42 @@ async function start() {
       },
     },
     bezierHandlers: bezier.panelHandlers,
+    endHandlers: {
+      onField: (patch, end, key, value, typed) => {
+        try {
+          state.setEndField(patch, end, key, value); // a continuity may raise the orders
+        } catch (err) {
+          status.error(`cannot change the end: ${err.message}`);
+          return;
+        }
+        if (typed) solveAfterTyping();
+        else scheduler.request();
+      },
+      onAttach: (patch, end) => endChange(() => state.attachEnd(patch, end), 'attach'),
+      onDetach: (patch, end, derived) => endChange(() => state.detachEnd(patch, end, derived), 'detach'),
+    },
     onExpression: (patch, field, text) => {
       state.setExpression(patch, field, text);
-      clearTimeout(typingTimer);
-      typingTimer = setTimeout(() => scheduler.request(), EXPRESSION_DEBOUNCE_MS);
+      solveAfterTyping();
     },
   });
+
+  function solveAfterTyping() {
+    clearTimeout(typingTimer);
+    typingTimer = setTimeout(() => scheduler.request(), EXPRESSION_DEBOUNCE_MS);
+  }
+
+  // Attach or detach: the end and the blend's function fields change shape, then re-solve.
+  function endChange(change, what) {
+    try {
+      change();
+    } catch (err) {
+      status.error(`cannot ${what} the end: ${err.message}`);
+      return;
+    }
+    panel.rebuildEnds();
+    scheduler.request();
+  }
 
   watchNumberControls(panel.gui);
   // At small sizes the panel is a sheet: its title bar closes it rather than folding it.
@@ -342,6 +372,7 @@ async function start() {
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
     analysis.solved(result, job.options);
+    state.noteSolved(result.patches);
     if (cameraPending) viewer.setCamera(cameraPending);
     else if (fitPending) viewer.fit();
     cameraPending = null;

@@ -18,7 +18,8 @@ export default async function createModule(opts) {
       if (s.fail) return { ok: false, error: { code: s.fail, message: 'bad ' + s.fail } };
       if (s.throwRaw) throw 12345;
       const V = (nu + 1) * (nv + 1);
-      return { ok: true, patches: [{ name: 'blend', kind: 'pde',
+      const ends = s.ends ? { u1: { surface: 'sphere', derived: { x: ['cos(v)', '2*cos(v)'], y: ['sin(v)', '0'], z: ['1', '0.5'] } } } : undefined;
+      return { ok: true, patches: [{ name: 'blend', kind: 'pde', ends,
         operator: { x: { order: 4, params: { b: 2, c: 1, d: 1 } }, y: { order: 2, params: { s: 1, t: 0.5 } }, z: { order: 6, params: { a: 3 } } }, method: 'closed', methods: ['auto', 'closed'],
         positions: new Float32Array(3 * V).fill(1), normals: new Float32Array(3 * V), uvs: new Float32Array(2 * V),
         indices: new Uint32Array(6 * nu * nv) }] };
@@ -49,6 +50,12 @@ describe('solver wrapper', () => {
       assert.ok(p.indices instanceof Uint32Array && p.indices.length === 36);
       assert.deepEqual(p.operator, { x: { order: 4, params: { b: 2, c: 1, d: 1 } }, y: { order: 2, params: { s: 1, t: 0.5 } }, z: { order: 6, params: { a: 3 } } });
     }
+  });
+
+  it('passes the derived conditions of ends by reference through, and gives none otherwise', () => {
+    const [p] = solver.solve({ ends: true }, { nu: 2, nv: 2 }).patches;
+    assert.deepEqual(p.ends, { u1: { surface: 'sphere', derived: { x: ['cos(v)', '2*cos(v)'], y: ['sin(v)', '0'], z: ['1', '0.5'] } } });
+    assert.equal(solver.solve({}, { nu: 2, nv: 2 }).patches[0].ends, undefined);
   });
 
   it('throws PdesurfError with the code for an error result', () => {

@@ -2,7 +2,8 @@
 // order. The solver refuses more conditions than order/2, so lowering the order must
 // drop the higher derivative conditions; they are kept here so that raising the order
 // again brings them back instead of zeros. Entries are term arrays (version 1) or
-// expression strings (version 2); the stash only moves them.
+// expression strings (version 2); the stash only moves them. An end given by reference
+// (version 3, `ends.<end>`) has no typed list and gets none: the solver derives it.
 
 const ENDS = ['u0', 'u1'];
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
@@ -28,10 +29,12 @@ export function createBoundaryStash() {
      * version-1 term list, "0" for a version-2 expression).
      */
     fit(patch, axis, count, zero = []) {
+      const typed = ENDS.filter((end) => !(isObject(patch.ends) && isObject(patch.ends[end])));
+      if (typed.length === 0) return;
       if (!isObject(patch.boundary)) patch.boundary = {};
       if (!isObject(patch.boundary[axis])) patch.boundary[axis] = {};
       const comp = patch.boundary[axis];
-      for (const end of ENDS) {
+      for (const end of typed) {
         const list = Array.isArray(comp[end]) ? comp[end] : [];
         const kept = slot(patch.name, axis, end);
         for (let i = count; i < list.length; i++) kept.set(i, list[i]);

@@ -1,17 +1,22 @@
 // The scene object in memory is the page state: controls write into it, and
 // JSON.stringify(scene) is exactly what the solver sees.
-import { withParam, withOrder, orderOf, defaultParams } from './operator-edit.js';
+import { withParam, withOrder, orderOf, defaultParams, defaultOperator, isPerCoordinate, AXES } from './operator-edit.js';
 import { createBoundaryStash } from './boundary-stash.js';
 import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate } from './expression-edit.js';
 import { addParameter, removeParameter } from './parameter-edit.js';
 import { setRegionWeights } from './region-weights.js';
 import { setControlPointCoordinate } from './control-net-edit.js';
+import { setEndField, attach, attachDefaults, detach, neededOrder } from './ends-edit.js';
 
 const BEZIER_NUMBERS = ['lambda', 'gamma'];
 export const DEFAULT_GRID = Object.freeze({ nu: 64, nv: 64 }); // what an example opens with
 
 export function createSceneState() {
   const stash = createBoundaryStash(); // derivative conditions dropped by order changes
+  // The last good solve's order per pde patch and coordinate ({ x, y, z }): a version-3
+  // operator may leave its order to the solver, and edits of it need them.
+  let solvedOrders = new Map();
+  const ordersOf = (name) => solvedOrders.get(name) || {};
 
   const state = {
     scene: null,
@@ -23,6 +28,20 @@ export function createSceneState() {
       state.scene = scene;
       state.exampleId = exampleId;
       stash.clear();
+      solvedOrders = new Map();
+    },
+
+    /** After a good solve: note each blend's resolved orders (result patches' operator). */
+    noteSolved(patches) {
+      solvedOrders = new Map();
+      for (const p of patches) {
+        if (p && p.operator) solvedOrders.set(p.name, Object.fromEntries(AXES.map((axis) => [axis, p.operator[axis].order])));
+      }
+    },
+
+    /** The resolved { x, y, z } orders of a blend at the last good solve ({} before one). */
+    solvedOrders(patchName) {
+      return { ...ordersOf(patchName) };
     },
 
     /** The pde patches of the scene, in scene order. */
@@ -43,7 +62,7 @@ export function createSceneState() {
      */
     setOperatorParam(patchName, axis, name, value) {
       const patch = state.pdePatch(patchName);
-      patch.operator = withParam(patch.operator, axis, name, value);
+      patch.operator = withParam(patch.operator, axis, name, value, ordersOf(patchName));
     },
 
     /**
@@ -54,7 +73,7 @@ export function createSceneState() {
     setOperatorOrder(patchName, axis, order) {
       const patch = state.pdePatch(patchName);
       if (orderOf(patch.operator, axis) === order) return null;
-      patch.operator = withOrder(patch.operator, axis, order);
+      patch.operator = withOrder(patch.operator, axis, order, ordersOf(patchName));
       stash.fit(patch, axis, order / 2, hasExpressions(state.scene) ? '0' : []);
       return defaultParams(order);
     },
@@ -94,6 +113,50 @@ export function createSceneState() {
       else if (field.kind === 'force') setForce(patch, field.axis, text);
       else if (field.kind === 'surface') setSurfaceCoordinate(patch, field.axis, text);
       else throw new Error(`unknown expression field ${JSON.stringify(field.kind)}`);
+    },
+
+    /**
+     * Write one field of a blend's end given by reference (web/state/ends-edit.js
+     * setEndField). A continuity above what a coordinate's order carries raises that
+     * order (default coefficients); returns the coordinates raised (often none).
+     */
+    setEndField(patchName, end, key, value) {
+      const patch = state.pdePatch(patchName);
+      setEndField(patch, end, key, value);
+      return key === 'continuity' ? state.fitOrdersToEnds(patchName) : [];
+    },
+
+    /**
+     * Raise the coordinates whose resolved order is below what the referenced ends ask
+     * (never lower one: a higher order is allowed). Returns the axes raised.
+     */
+    fitOrdersToEnds(patchName) {
+      const patch = state.pdePatch(patchName);
+      const needed = neededOrder(patch);
+      const orders = ordersOf(patchName);
+      const low = AXES.filter((axis) => Number.isFinite(orders[axis]) && orders[axis] < needed);
+      if (low.length === 0) return [];
+      const single = !patch.operator || (typeof patch.operator === 'object' && !isPerCoordinate(patch.operator));
+      if (low.length === AXES.length && single) {
+        // All three rise together: the single form stays single.
+        patch.operator = defaultOperator(needed);
+        for (const axis of AXES) stash.fit(patch, axis, needed / 2, '0');
+      } else {
+        for (const axis of low) state.setOperatorOrder(patchName, axis, needed);
+      }
+      for (const axis of low) orders[axis] = needed;
+      return low;
+    },
+
+    /** Give a typed end by reference with the defaults of ends-edit.js attachDefaults. */
+    attachEnd(patchName, end) {
+      const patch = state.pdePatch(patchName);
+      attach(state.scene, patch, end, attachDefaults(state.scene, patch, end, ordersOf(patchName)));
+    },
+
+    /** Type a referenced end's derived conditions (the last solve's texts) in its place. */
+    detachEnd(patchName, end, derived) {
+      detach(state.pdePatch(patchName), end, derived, ordersOf(patchName));
     },
 
     /** The bezier patch named `name`; throws if there is none. */

@@ -6,7 +6,7 @@ import { escapeHtml } from './html-text.js';
 
 /**
  * Add a field to `folder`. spec: { label, title, path, value, onEdit(text) }.
- * Returns { path, showError(message | null), destroy() }.
+ * Returns { path, element (the controller's root), showError(message | null), destroy() }.
  */
 export function buildExpressionField(folder, { label, title, path, value, onEdit }) {
   const model = { text: value };
@@ -27,6 +27,7 @@ export function buildExpressionField(folder, { label, title, path, value, onEdit
 
   return {
     path,
+    element: root,
     showError(text) {
       const on = typeof text === 'string' && text !== '';
       message.hidden = !on;

@@ -2,11 +2,14 @@
 // coordinate the boundary slots u0/u1 × derivative order (order/2 of each) and the
 // force; per "surface" patch its x, y, z in t and v. Edits go through onEdit; solver
 // messages come back through showSolveError and land beside the field they name.
+// An end given by reference (version 3) has no slots: the solver derives them and would
+// refuse typed ones. A one-line note points to its Ends folder instead.
 import { escapeHtml } from './html-text.js';
 import { buildExpressionField, fieldForMessage } from './expression-field.js';
 import {
   AXES, ENDS, boundaryPath, forcePath, surfacePath, boundarySlot, forceOf, surfaceCoordinate,
 } from '../state/expression-edit.js';
+import { isByReference } from '../state/ends-edit.js';
 
 const PRIMES = ['', 'ᵤ', 'ᵤᵤ', 'ᵤᵤᵤ'];
 const slotLabel = (axis, end, k) => `${axis}${PRIMES[k] ?? `^(${k})`}(${end === 'u0' ? 0 : 1})`;
@@ -17,7 +20,7 @@ const slotTitle = (axis, end, k) =>
  * scene: the scene object (read for the current text); solved: the solver's patches
  * (for each blend coordinate's resolved order); onEdit(patchName, field, text) where
  * field is { kind: 'boundary', axis, end, k } | { kind: 'force', axis } | { kind: 'surface', axis }.
- * Returns { setOrder(patchName, axis, order), update(solved), showSolveError(msg), lastEdited, destroy() }.
+ * Returns { setOrder(patchName, axis, order), update(solved), showSolveError(msg), elements(), destroy() }.
  */
 export function buildExpressionFolders(gui, scene, solved, onEdit) {
   const folders = [];
@@ -37,6 +40,7 @@ export function buildExpressionFolders(gui, scene, solved, onEdit) {
     view.count = count;
     const { patch, index } = view;
     for (const end of ENDS) {
+      if (isByReference(patch, end)) continue;
       for (let k = 0; k < count; k++) {
         const f = buildExpressionField(view.folder, {
           label: slotLabel(axis, end, k), title: slotTitle(axis, end, k), path: boundaryPath(index, axis, end, k),
@@ -61,6 +65,13 @@ export function buildExpressionFolders(gui, scene, solved, onEdit) {
       const folder = gui.addFolder(escapeHtml(`Functions “${patch.name}”`));
       folder.domElement.classList.add('expr-folder');
       folder.domElement.dataset.functions = patch.name;
+      for (const end of ENDS.filter((e) => isByReference(patch, e))) {
+        const line = document.createElement('div');
+        line.className = 'end-note';
+        line.dataset.endNote = end;
+        line.textContent = `${end}: given by reference (Ends of “${patch.name}”)`; // text: never markup
+        folder.$children.append(line);
+      }
       for (const axis of AXES) {
         const view = { folder: folder.addFolder(escapeHtml(axis)), fields: [], count: 0, patch, index };
         view.folder.domElement.dataset.axis = axis;
@@ -103,6 +114,10 @@ export function buildExpressionFolders(gui, scene, solved, onEdit) {
       const target = fieldForMessage(fields(), message, lastEdited);
       for (const f of fields()) f.showError(f === target ? message : null);
       return target ? target.path : null;
+    },
+    /** The folders' root elements, in order (to put rebuilt folders where the old ones were). */
+    elements() {
+      return folders.map((f) => f.domElement);
     },
     destroy() {
       for (const f of folders) f.destroy();

@@ -1,11 +1,12 @@
 // The control panel (three's bundled lil-gui): sharing, files and grid resolution at the
-// top, then the per-scene folders (parameters, blends' operators, bezier patches,
-// version-2 function fields), then analysis and joins.
+// top, then the per-scene folders (parameters, blends' operators, blends' ends by
+// reference, bezier patches, version-2 function fields), then analysis and joins.
 // Scene folders are rebuilt whenever another scene opens; the gallery is elsewhere.
 import GUI from 'three/addons/libs/lil-gui.module.min.js';
 import { buildParameterFolder } from './parameter-controls.js';
 import { buildOperatorFolders } from './operator-controls.js';
 import { buildExpressionFolders } from './expression-folders.js';
+import { buildEndFolders } from './end-controls.js';
 import { buildShareFolder } from './share-controls.js';
 import { buildBezierFolders } from './bezier-controls.js';
 import { hasExpressions } from '../state/expression-edit.js';
@@ -18,9 +19,9 @@ const GRID_MAX = 256;
  * grid: {nu, nv} (edited in place); onGridChange(); onShare();
  * parameterHandlers: { onChange, onAdd(name, value) -> bool, onRemove(name) };
  * operatorHandlers: see buildOperatorFolders; bezierHandlers: see buildBezierFolders;
- * onExpression(patch, field, text).
+ * endHandlers: see buildEndFolders; onExpression(patch, field, text).
  */
-export function createPanel({ grid, onGridChange, onShare, parameterHandlers, operatorHandlers, bezierHandlers, onExpression }) {
+export function createPanel({ grid, onGridChange, onShare, parameterHandlers, operatorHandlers, bezierHandlers, endHandlers, onExpression }) {
   const gui = new GUI({ title: 'pdesurf', width: 340 });
   gui.domElement.id = 'panel';
 
@@ -38,6 +39,8 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
   let operators = null;
   let bezier = null;
   let expressions = null;
+  let ends = null;
+  let lastSolved = []; // the patches of the last good solve (folders rebuilt between solves use them)
   let reopen = null; // after an undo or redo: the folders' open state, put back once they are rebuilt
   // Scene folders are appended as they are built; the top folders (share, those of
   // keepAfterShare, grid) stay first, the fixed folders (analysis and joins, see keepAtEnd) last.
@@ -47,6 +50,17 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
     for (const el of [...top].reverse()) gui.$children.prepend(el);
     for (const el of fixed) gui.$children.appendChild(el);
   };
+
+  // Build new folders where `old`'s were (appended at the end when there were none).
+  function replaceFolders(old, build) {
+    const anchor = old ? old.elements()[0] : null;
+    const next = build();
+    if (anchor && next) for (const el of next.elements()) gui.$children.insertBefore(el, anchor);
+    old?.destroy();
+    return next;
+  }
+  const buildEnds = () => (endHandlers ? buildEndFolders(gui, scene, lastSolved, endHandlers) : null);
+  const buildExpressions = () => (hasExpressions(scene) ? buildExpressionFolders(gui, scene, lastSolved, onExpression) : null);
 
   function buildParameters() {
     const old = paramFolder;
@@ -81,7 +95,9 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       operators?.destroy();
       bezier?.destroy();
       expressions?.destroy();
-      operators = bezier = expressions = null;
+      ends?.destroy();
+      operators = bezier = expressions = ends = null;
+      lastSolved = [];
       reopen = null;
       buildParameters();
       fixedToEnd();
@@ -105,8 +121,10 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
 
     /** After a successful solve: build the scene folders once per scene, else refresh them. */
     showSolved(patches) {
+      lastSolved = patches;
       if (operators && !reopen) {
         operators.update(patches);
+        ends?.update(patches);
         bezier.update(patches);
         expressions?.update(patches);
         return;
@@ -115,17 +133,38 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       operators?.destroy();
       bezier?.destroy();
       expressions?.destroy();
+      ends?.destroy();
       operators = buildOperatorFolders(gui, patches, operatorHandlers);
+      ends = buildEnds();
       bezier = buildBezierFolders(gui, scene, patches, bezierHandlers, carried);
-      expressions = hasExpressions(scene) ? buildExpressionFolders(gui, scene, patches, onExpression) : null;
+      expressions = buildExpressions();
       reopen?.(gui);
       reopen = null;
       fixedToEnd();
     },
 
-    /** After a failed solve: the message beside the function field it names; returns its path or null. */
+    /**
+     * An end was attached or detached: its Ends folder and the blend's function fields
+     * change shape at once (with the last solve's orders and derived texts), in place and
+     * open or closed as they were.
+     */
+    rebuildEnds() {
+      if (!operators) return; // not built yet: the first solve builds them
+      const reopenNow = rememberFolders(gui);
+      ends = replaceFolders(ends, buildEnds);
+      expressions = replaceFolders(expressions, buildExpressions);
+      reopenNow(gui);
+      fixedToEnd();
+    },
+
+    /**
+     * After a failed solve: the message beside the function field or in the end's folder
+     * it names; returns the field's path, the end ("<patch>.<end>"), or null.
+     */
     showSolveError(message) {
-      return expressions ? expressions.showSolveError(message) : null;
+      const end = ends ? ends.showSolveError(message) : null;
+      const field = expressions ? expressions.showSolveError(message) : null;
+      return field ?? end;
     },
 
     /** A coordinate's order changed: its function fields follow at once. */
