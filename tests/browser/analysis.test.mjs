@@ -62,12 +62,15 @@ for (const size of SIZES) {
     const state = () => page.evaluate(() => window.__pdesurf.analysis());
     const frame = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
-    // The drawn view: the viewport minus the title bar, the status line and (desktop) the panel.
+    // The drawn view: the viewport minus the toolbar and title, the status line and (desktop) the panel.
     const viewRect = () => page.evaluate(() => {
       const v = document.getElementById('viewport').getBoundingClientRect();
       const p = document.getElementById('panel').getBoundingClientRect();
       const x1 = p.left > v.left + 100 && p.top < v.bottom ? Math.min(v.right, p.left) : v.right;
-      return { x0: Math.ceil(v.left), x1: Math.floor(x1), y0: Math.ceil(v.top) + 56, y1: Math.floor(v.bottom) - 50 };
+      // Below the title (at phone size it sits under the toolbar, on two lines).
+      const title = document.getElementById('title-bar').getBoundingClientRect();
+      const y0 = Math.max(Math.ceil(v.top) + 56, Math.ceil(title.bottom) + 4);
+      return { x0: Math.ceil(v.left), x1: Math.floor(x1), y0, y1: Math.floor(v.bottom) - 50 };
     });
 
     async function openFolder(name) {
@@ -79,6 +82,18 @@ for (const size of SIZES) {
         await page.waitForFunction((n) => !document.querySelector(`#panel [data-folder="${n}"]`).classList.contains('transition'), name);
       }
       return folder;
+    }
+
+    // A screenshot of the view and its rect. At phone size the Controls sheet is closed first
+    // (its toolbar button), so the surface is measured at the size a user sees it; openFolder
+    // reopens it.
+    async function viewShot(name) {
+      if (size.name === 'phone' && (await page.locator('#panel').isVisible())) {
+        await page.locator('#toolbar [data-action="panel"]').click();
+        await frame();
+      }
+      const rect = await viewRect();
+      return { img: await shoot(page, name), rect };
     }
 
     async function setShading(mode) {
@@ -137,16 +152,15 @@ for (const size of SIZES) {
 
     it('normal shading draws the two patch colours', async () => {
       await setShading('normal');
-      const img = await shoot(page, `analysis-normal-${size.name}.png`);
-      shots.normal = { img, rect: await viewRect() };
+      const { img, rect } = await viewShot(`analysis-normal-${size.name}.png`);
+      shots.normal = { img, rect };
       assert.equal((await state()).legend, null, 'a legend in normal shading');
       assert.equal(await page.locator('#curvature-legend').isVisible(), false);
     });
 
     it('zebra stripes alternate many times across the surface and follow the stripe width', async () => {
       await setShading('zebra');
-      const rect = await viewRect();
-      const img = await shoot(page, `analysis-zebra-${size.name}.png`);
+      const { img, rect } = await viewShot(`analysis-zebra-${size.name}.png`);
       shots.zebra = { img, rect };
       const runs = stripeRuns(img, rect);
       const normalRuns = stripeRuns(shots.normal.img, shots.normal.rect);
@@ -154,12 +168,14 @@ for (const size of SIZES) {
       assert.ok(runs > want, `only ${runs} dark/light changes in zebra mode`);
       assert.ok(runs > 10 * Math.max(normalRuns, 1), `zebra ${runs} vs normal ${normalRuns} changes`);
       // Wider stripes: fewer changes.
+      await openFolder('analysis');
       const width = page.locator('#panel [data-analysis="stripeWidth"] input');
       await width.fill('18');
       await width.press('Enter');
       await frame();
-      const wide = stripeRuns(await shoot(page, `analysis-zebra-wide-${size.name}.png`), rect);
+      const wide = stripeRuns((await viewShot(`analysis-zebra-wide-${size.name}.png`)).img, rect);
       assert.ok(wide < runs * 0.7, `stripe width 18° gave ${wide} changes, 6° gave ${runs}`);
+      await openFolder('analysis');
       await width.fill('6');
       await width.press('Enter');
     });
@@ -186,8 +202,7 @@ for (const size of SIZES) {
         document.getElementById('viewport').getBoundingClientRect().toJSON()]);
       assert.ok(lb.left >= vb.left && lb.right <= vb.right && lb.bottom <= vb.bottom, 'the legend leaves the view');
       assert.ok(lb.width * lb.height < 0.2 * vb.width * vb.height, 'the legend covers too much of the view');
-      const rect = await viewRect();
-      const img = await shoot(page, `analysis-mean-${size.name}.png`);
+      const { img, rect } = await viewShot(`analysis-mean-${size.name}.png`);
       shots.mean = { img, rect };
       const d = drawnDifference(blockAverage(img, rect), blockAverage(shots.normal.img, rect));
       assert.ok(d > 0.3, `the mean-curvature map looks like normal shading (${(100 * d).toFixed(1)} % differs)`);
@@ -197,8 +212,7 @@ for (const size of SIZES) {
       await setShading('gauss');
       const s = await state();
       assert.ok(s.scale && s.scale.min < 0 && s.scale.max > 0, `scale ${JSON.stringify(s.scale)}`);
-      const img = await shoot(page, `analysis-gauss-${size.name}.png`);
-      const rect = await viewRect();
+      const { img, rect } = await viewShot(`analysis-gauss-${size.name}.png`);
       // Cylinder vertices half-way up (t = 0.5 of its range), all around: front or back, all K = 0.
       const points = await page.evaluate(() => {
         const out = [];
@@ -240,8 +254,7 @@ for (const size of SIZES) {
       const s = await state();
       assert.equal(s.wireframe, 3, 'one line set per patch');
       assert.equal(s.mode, 'normal');
-      const rect = await viewRect();
-      const img = await shoot(page, `analysis-wireframe-${size.name}.png`);
+      const { img, rect } = await viewShot(`analysis-wireframe-${size.name}.png`);
       const d = drawnDifference(blockAverage(img, rect, 2), blockAverage(shots.normal.img, rect, 2));
       assert.ok(d > 0.1, `the wireframe changed only ${(100 * d).toFixed(1)} % of the drawn area`);
       await setShading('zebra');
@@ -287,11 +300,11 @@ for (const size of SIZES) {
       assert.ok(after.highlights.includes(`${j.patch}\u0000${j.end}`), `highlights: ${after.highlights}`);
       await folder.evaluate((el) => el.scrollIntoView({ block: 'start' })); // the panel shows the joins list
       await frame();
-      const img = await shoot(page, `analysis-joins-${size.name}.png`);
-      const rect = await viewRect();
+      const { img, rect } = await viewShot(`analysis-joins-${size.name}.png`);
       const colour = j.ok ? HIGHLIGHT.pick : HIGHLIGHT.fail;
       const n = countNear(img, rect, colour, 60);
       assert.ok(n > (size.name === 'phone' ? 80 : 200), `only ${n} highlight-coloured pixels`);
+      await openFolder('joins'); // at phone size the sheet was closed for the screenshot
       await box.uncheck();
       await frame();
       assert.ok(!(await state()).highlights.includes(`${j.patch}\u0000${j.end}`), 'unticking kept the highlight');
