@@ -172,6 +172,7 @@ int precedence(const ExprNode& e) {
 }
 
 std::string number(double x) {
+  if (x == 0) return "0";  // -0 (a negated zero condition) reads as 0
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   // Prefer the shortest text that reads back to the same double.
