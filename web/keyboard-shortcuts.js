@@ -14,6 +14,8 @@ export function isTextField(target) {
 
 /** { fit(), help: { toggle, isOpen, close }, layout } */
 export function installShortcuts({ fit, help, layout }) {
+  // Capture: lil-gui stops keydown from leaving its panel, and Esc must close the panel's
+  // sheet from inside it too.
   window.addEventListener('keydown', (ev) => {
     if (ev.defaultPrevented || ev.ctrlKey || ev.metaKey || ev.altKey) return;
     if (ev.key === 'Escape') {
@@ -28,5 +30,5 @@ export function installShortcuts({ fit, help, layout }) {
       ev.preventDefault();
       fit();
     }
-  });
+  }, true);
 }

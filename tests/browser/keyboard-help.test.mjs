@@ -95,6 +95,15 @@ describe('keyboard, help and the small things', { skip }, () => {
     await field.fill('');
   });
 
+  it('Esc closes the Controls sheet even from a field inside it', async () => {
+    const phone = await h.open('/web/#example=you2004-fig2a', { viewport: { width: 390, height: 844 } });
+    await phone.locator('[data-action="panel"]').click();
+    await phone.locator('#panel [data-param="r0"] input').focus();
+    await phone.keyboard.press('Escape');
+    assert.equal(await phone.locator('#panel').isVisible(), false);
+    await phone.close();
+  });
+
   it('the help fits a phone', async () => {
     const phone = await h.open('/web/#example=you2004-fig2a', { viewport: { width: 390, height: 844 } });
     await phone.locator('[data-action="help"]').click();
