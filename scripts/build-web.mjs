@@ -54,7 +54,7 @@ html = html.replace(/(\n\s*<\/head>)/, `${preloads.join('')}$1`);
 html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
 if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');
 fs.writeFileSync(path.join(OUT, 'index.html'), html);
-for (const f of ['style.css', 'load-check.js', 'boot.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
+for (const f of ['style.css', 'panel.css', 'load-check.js', 'boot.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
 
 // Precompressed siblings: brotli at its best (built once), gzip for clients without it.
 const compress = (file) => {

@@ -208,21 +208,27 @@ async function start() {
     },
   });
 
+  // Another scene on screen: fresh overlays, analysis and panel, its gallery entry and title,
+  // and the camera it comes with (else framed on its first solve).
+  function presentScene(scene, exampleId, title, camera) {
+    viewer.resetOverlays();
+    bezier.reset();
+    analysis.newScene();
+    panel.showScene(scene);
+    gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+    titleEl.textContent = title;
+    cameraPending = camera;
+    fitPending = !camera;
+  }
+
   // Shared by examples and links: the scene becomes the page state and is solved.
   function showScene(scene, { exampleId = null, title, camera = null }) {
     sceneToken++;
     share.opening();
     opening = true;
     state.setScene(scene, exampleId);
-    viewer.resetOverlays();
-    bezier.reset();
-    analysis.newScene();
     hooks.exampleId = exampleId;
-    panel.showScene(scene);
-    gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
-    titleEl.textContent = title;
-    cameraPending = camera;
-    fitPending = !camera;
+    presentScene(scene, exampleId, title, camera);
     scheduler.request();
     undoRedo.opened();
     return sceneToken;
@@ -243,16 +249,7 @@ async function start() {
     panel.refreshGrid();
     hooks.exampleId = exampleId;
     if (sameScene) panel.restoreScene(scene); // overlays and the edited point stay
-    else {
-      viewer.resetOverlays();
-      bezier.reset();
-      analysis.newScene();
-      panel.showScene(scene);
-      gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
-      titleEl.textContent = title;
-      cameraPending = camera;
-      fitPending = !camera;
-    }
+    else presentScene(scene, exampleId, title, camera);
     scheduler.request();
   }
 
