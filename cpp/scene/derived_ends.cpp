@@ -74,7 +74,7 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
          "the blend's v_range [" + num(bv0) + ", " + num(bv1) + "] is not inside the v_range [" + num(S.v0) + ", " + num(S.v1) + "] of '" + ref.surface + "'");
   const Vec3Expr dP = dv(d.P);
   const double ttol = 1e-9 * std::max(1.0, std::abs(S.t1 - S.t0));
-  std::vector<double> speeds;
+  std::vector<Eigen::Vector3d> Ts, alongs;  // S_t and the trimline's tangent at each sample
   double maxT = 0.0;
   for (int k = 0; k < kSamples; ++k) {
     const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
@@ -89,20 +89,22 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
       fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + num(v));
     const double p = evaluate(*ref.power, vars);
     if (!std::isfinite(p)) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + num(v));
-    speeds.push_back(T.norm());
+    Ts.push_back(T);
+    alongs.push_back(eval3(dP, v));
     maxT = std::max(maxT, T.norm());
   }
   for (int k = 0; k < kSamples; ++k) {
     const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
-    const Eigen::Vector3d T = eval3(d.T, v), along = eval3(dP, v);
-    if (!(speeds[k] > 1e-9 * maxT))
+    const Eigen::Vector3d& T = Ts[k];
+    const Eigen::Vector3d& along = alongs[k];
+    if (!(T.norm() > 1e-9 * maxT))
       fail(ErrorCode::InvalidField, ref.path, "dS/dt of '" + ref.surface + "' vanishes on the trimline at v = " + num(v) + ": no direction across it");
     // A trimline that stops (a pole) has no direction to be parallel to.
     if (along.allFinite() && along.norm() > 1e-9 * maxT && T.cross(along).norm() < 1e-6 * T.norm() * along.norm())
       fail(ErrorCode::InvalidField, ref.path, "dS/dt of '" + ref.surface + "' is parallel to the trimline at v = " + num(v) + ": no direction across it");
   }
   double sum = 0.0;
-  for (double s : speeds) sum += s;
+  for (const Eigen::Vector3d& T : Ts) sum += T.norm();
   d.meanT = sum / kSamples;
   return d;
 }
@@ -132,7 +134,7 @@ void trim(Patch& surface, const EndReference& ref) {
   S.trimmed = true;
 }
 
-void recordJoin(Scene& scene, const DerivedEnd& d, const Patch& blend, const EndReference& ref, int end) {
+void recordJoin(const DerivedEnd& d, const Patch& blend, const EndReference& ref, int end) {
   Meets m;
   m.patch = blend.name;
   m.end = end;
@@ -145,7 +147,6 @@ void recordJoin(Scene& scene, const DerivedEnd& d, const Patch& blend, const End
   if (have.patch == m.patch && (have.end != m.end || have.atT1 != m.atT1 || have.alongU))
     fail(ErrorCode::InvalidField, "patches[" + std::to_string(d.surfaceIndex) + "].meets",
          "disagrees with " + ref.path + " (which makes edge " + (m.atT1 ? "t1" : "t0") + " meet " + (end ? "u1" : "u0") + ")");
-  (void)scene;
 }
 
 }  // namespace
@@ -192,7 +193,7 @@ void deriveEnds(Scene& scene) {
           slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
         }
       }
-      recordJoin(scene, d, blend, ref, end);
+      recordJoin(d, blend, ref, end);
     }
     for (int end = 0; end < 2; ++end)
       if (blend.ends[end].given && blend.ends[end].curve) trim(*derived[end].surface, blend.ends[end]);
