@@ -58,7 +58,9 @@ TEST_CASE("modal: the error falls steadily as terms are added") {
   const MethodSolution ref = solveReference(fig5.problem());
   CHECK(ref.referenceChange < 1e-12);
   last = INFINITY;
-  for (int N : {2, 4, 8, 16, 32}) {
+  // From N = 8: below it the exact boundary data's lift (a Hermite polynomial in u times what
+  // the modes miss) is as large as the modes' own error.
+  for (int N : {8, 16, 32, 64}) {
     const double e = relativeError(ref.surface, solveModal(fig5.problem(), N), 50, 50);
     CAPTURE(N);
     CHECK(e < last / 4);
