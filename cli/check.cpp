@@ -5,7 +5,7 @@
 
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
-#include "methods/residual.hpp"
+#include "methods/measures.hpp"
 
 namespace pdesurf::cli {
 
@@ -20,7 +20,7 @@ struct PatchResidual {
 std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
   std::vector<PatchResidual> out;
   for (const SolvedPatch& s : solved)
-    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), pdeResidual(s.surface, s.patch->pde)});
+    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.patch->pde, s.surface)});
   return out;
 }
 

@@ -4,7 +4,7 @@
 // O(order² · distinct nodes) per point, whatever the order, where symbolic derivatives swell
 // with each order (a product rule per level). For the high v-derivatives that only a few
 // points need: the end matching of the open-data approximation (methods/approximate.hpp) and
-// the PDE residual (methods/residual.hpp).
+// the PDE residual (interiorResidual, methods/measures.hpp).
 #pragma once
 #include <vector>
 

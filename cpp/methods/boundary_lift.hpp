@@ -8,7 +8,7 @@
 // The first sum removes every term's own boundary values (a polynomial piece added to its
 // u-factor, so no term is added), the second adds the data as given (general functions
 // evaluated exactly). The change is L-small where the approximation is good; its size is the
-// PDE residual (methods/residual.hpp), reported, never the joins.
+// PDE residual (interiorResidual, methods/measures.hpp), reported, never the joins.
 #pragma once
 #include <vector>
 

@@ -15,7 +15,7 @@
 //   auto              closed if possible, else modal with N raised until the change is below
 //                     1e-9 (cheaper than reference, far below what a screen shows)
 // Every method auto picks meets the boundary data exactly (to rounding): a blend is judged at
-// its joins. The interior's accuracy is the PDE residual (methods/residual.hpp).
+// its joins. The interior's accuracy is the PDE residual (interiorResidual, methods/measures.hpp).
 #pragma once
 #include <string>
 #include <vector>

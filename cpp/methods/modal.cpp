@@ -4,7 +4,7 @@
 // taken off (N > 20, methods/end_matched_fourier.cpp); the whole problem is then solved
 // exactly. Family terms are untouched. The boundary data are then imposed exactly
 // (methods/boundary_lift.hpp), so N decides the interior only, measured by the PDE residual
-// (methods/residual.hpp): geometric convergence for smooth periodic data, for open data
+// (interiorResidual, methods/measures.hpp): geometric convergence for smooth periodic data, for open data
 // geometric up to degree 20 and then algebraic (like N^-(m+1)).
 #include <algorithm>
 #include <cmath>
