@@ -8,6 +8,8 @@
 // (Eckhoff's method, in the form of Lanczos' and Krylov's polynomial subtraction).
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
+#include <vector>
 #include <cmath>
 
 #include "common/errors.hpp"
@@ -17,11 +19,26 @@ namespace pdesurf {
 
 VExpansion endMatchedFourier(const VExpansion& f, double v0, double v1, int N, int m) {
   const double c = 0.5 * (v0 + v1), w = 2.0 / (v1 - v0);  // s = (v - c) w runs over [-1, 1]
+  // d^k f / ds^k at both ends; where a derivative is not finite (f ~ sqrt(v - v0) at an end)
+  // match one order less: the series then converges more slowly, but converges.
+  std::array<std::vector<double>, 2> ends;
+  for (int end = 0; end < 2; ++end)
+    for (int k = 0; k <= m; ++k) {
+      const double d = expansionValue(f, end ? v1 : v0, k) / std::pow(w, k);
+      if (!std::isfinite(d)) {
+        if (k == 0)
+          throw Error(ErrorCode::NonFinite, "'" + (f.empty() ? std::string("?") : describeFunction(f.front().g)) +
+                                                "' is not finite at v = " + std::to_string(end ? v1 : v0));
+        m = k - 1;
+        break;
+      }
+      ends[end].push_back(d);
+    }
   const int rows = 2 * m + 2;
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(rows, rows);
   Eigen::VectorXd b(rows);
   for (int end = 0; end < 2; ++end) {
-    const double s = end ? 1.0 : -1.0, v = end ? v1 : v0;
+    const double s = end ? 1.0 : -1.0;
     for (int k = 0; k <= m; ++k) {
       const int row = end * (m + 1) + k;
       for (int j = k; j < rows; ++j) {
@@ -29,10 +46,7 @@ VExpansion endMatchedFourier(const VExpansion& f, double v0, double v1, int N, i
         for (int i = 0; i < k; ++i) falling *= j - i;
         A(row, j) = falling * std::pow(s, j - k);
       }
-      b(row) = expansionValue(f, v, k) / std::pow(w, k);  // d^k f / ds^k
-      if (!std::isfinite(b(row)))
-        throw Error(ErrorCode::NonFinite, "'" + (f.empty() ? std::string("?") : describeFunction(f.front().g)) + "': its " +
-                                              std::to_string(k) + "-th derivative is not finite at v = " + std::to_string(v));
+      b(row) = ends[end][k];
     }
   }
   const Eigen::VectorXd coef = A.fullPivLu().solve(b);

@@ -208,3 +208,18 @@ TEST_CASE("random blends by reference keep every promise at their joins, on open
                 << curves << " curve trimlines, " << general << " solved by a general method; worst G0 " << worstG0 << ", G1 " << worstG1
                 << " deg, G2 " << worstG2 << "; worst interior residual " << worstResidual);
 }
+
+TEST_CASE("open data whose high derivatives are not finite at an end still solve, with exact joins") {
+  // v^2.5 has no finite third derivative at v = 0: the end match drops to the orders that exist.
+  const json j = json::parse(R"({"format":"pdesurf-scene","version":3,"patches":[
+    {"name":"blend","kind":"pde","v_range":[0,2],"ends":{"u0":{"surface":"lower","at":"t0","continuity":"tangency"},
+                                                       "u1":{"surface":"upper","at":"t0","continuity":"tangency"}}},
+    {"name":"lower","kind":"surface","v_range":[0,2],"t_range":[0,1],"x":"v","y":"-t","z":"0.3*v^2.5*t"},
+    {"name":"upper","kind":"surface","v_range":[0,2],"t_range":[0,1],"x":"v","y":"1+t","z":"1.5+t+0.2*v^2.5"}]})");
+  const Scene scene = parseScene(j.dump());
+  const std::vector<SolvedPatch> solved = solveScene(scene);
+  CHECK(solved.front().used.kind == MethodKind::Modal);
+  const SceneReport r = checkScene(scene, solved, 0);
+  REQUIRE(r.joins.size() == 2);
+  for (const JoinResult& jr : r.joins) CHECK(jr.ok);
+}
