@@ -16,7 +16,8 @@ namespace {
 constexpr int kSamples = 129;          // along the trimline
 constexpr int kTauBudget = 20000;      // evaluations of tau while bracketing poles between samples
 constexpr int kRefineDepth = 48;       // bisections of one sample interval at most
-constexpr int kGoldenSteps = 80;       // golden-section steps from one sampled minimum
+constexpr int kGoldenSteps = 56;       // golden-section steps from one sampled minimum (0.618^56 ~ 2e-12)
+constexpr size_t kMinima = 24;         // sampled minima refined at most, the smallest first
 
 using Vec3Expr = std::array<Expr, 3>;
 
@@ -100,17 +101,22 @@ double goldenMin(const std::function<double(double)>& f, double a, double b) {
   return fc <= fd ? c : d;
 }
 
-// Every sampled local minimum of f refined between its neighbours: calls bad(v) at the first
-// v where f(v) <= threshold (at a sample or between two).
+// The sampled local minima of f (at most kMinima, the smallest first) refined between their
+// neighbours: calls bad(v) at the first v where f(v) <= threshold (at a sample or between two).
 void minimaBelow(const std::vector<double>& vs, const std::vector<double>& fs, const std::function<double(double)>& f, double threshold,
                  const std::function<void(double)>& bad) {
   const int n = static_cast<int>(vs.size());
+  std::vector<int> minima;
   for (int k = 0; k < n; ++k) {
     if (!std::isfinite(fs[k])) continue;
     if (fs[k] <= threshold) bad(vs[k]);
     const double left = k > 0 ? fs[k - 1] : INFINITY, right = k + 1 < n ? fs[k + 1] : INFINITY;
     // A local minimum (strict on one side, so a constant f is not searched everywhere).
-    if (!(fs[k] <= left && fs[k] <= right && (fs[k] < left || fs[k] < right))) continue;
+    if (fs[k] <= left && fs[k] <= right && (fs[k] < left || fs[k] < right)) minima.push_back(k);
+  }
+  std::sort(minima.begin(), minima.end(), [&](int a, int b) { return fs[a] < fs[b]; });
+  if (minima.size() > kMinima) minima.resize(kMinima);
+  for (int k : minima) {
     const double v = goldenMin(f, vs[std::max(0, k - 1)], vs[std::min(n - 1, k + 1)]);
     if (f(v) <= threshold) bad(v);
   }
