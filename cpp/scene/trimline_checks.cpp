@@ -111,8 +111,11 @@ void minimaBelow(const std::vector<double>& vs, const std::vector<double>& fs, c
     if (!std::isfinite(fs[k])) continue;
     if (fs[k] <= threshold) bad(vs[k]);
     const double left = k > 0 ? fs[k - 1] : INFINITY, right = k + 1 < n ? fs[k + 1] : INFINITY;
-    // A local minimum (strict on one side, so a constant f is not searched everywhere).
-    if (fs[k] <= left && fs[k] <= right && (fs[k] < left || fs[k] < right)) minima.push_back(k);
+    // A local minimum (strict on one side, so a constant f is not searched everywhere) low
+    // enough to hide a zero between the samples: f(v_k) at most (twice) the rise to a
+    // neighbour, as for |v - v*| or (v - v*)² with v* within half a step.
+    const bool minimum = fs[k] <= left && fs[k] <= right && (fs[k] < left || fs[k] < right);
+    if (minimum && fs[k] <= 2 * std::max(left - fs[k], right - fs[k])) minima.push_back(k);
   }
   std::sort(minima.begin(), minima.end(), [&](int a, int b) { return fs[a] < fs[b]; });
   if (minima.size() > kMinima) minima.resize(kMinima);
