@@ -46,7 +46,7 @@ struct DerivedEnd {
 };
 
 // Step 1: the surface an end names (a "surface" patch), untouched.
-DerivedEnd find(Scene& scene, Patch& blend, int end) {
+DerivedEnd locate(Scene& scene, Patch& blend, int end) {
   DerivedEnd d;
   d.blend = &blend, d.end = end, d.ref = &blend.ends[end];
   const EndReference& ref = *d.ref;
@@ -188,7 +188,7 @@ void deriveEnds(Scene& scene) {
   for (Patch& blend : scene.patches) {
     if (blend.kind != PatchKind::Pde) continue;
     for (int end = 0; end < 2; ++end)
-      if (blend.ends[end].given) all.push_back(find(scene, blend, end));
+      if (blend.ends[end].given) all.push_back(locate(scene, blend, end));
   }
   if (all.empty()) return;
   checkRules(all);
