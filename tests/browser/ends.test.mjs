@@ -288,7 +288,8 @@ describe('ends by reference in the page', { skip }, () => {
   it('a derived text over the expression limit is not detached: the end stays by reference and says why', async () => {
     const scene = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'ref-sphere-fillet.json'), 'utf8'));
     const sphere = scene.patches.find((p) => p.name === 'sphere');
-    sphere.x += ' + ' + Array.from({ length: 40 }, (_, k) => `0.0001*cos(${k + 2}*v)*sin(t)`).join(' + ');
+    sphere.x += ' + ' + Array.from({ length: 24 }, (_, k) => `0.0001*cos(${k + 2}*v)*sin(t)`).join(' + ');
+    scene.patches[0].ends.u1.at = { t: 'th0 + 0.1 + 0.05*sin(v)', replaces: 't0' }; // tau in every t: x(1) > 1000 characters
     const long = await h.open(`/web/#${await encodeState({ scene })}`);
     await waitReady(long);
     const before = await long.evaluate(() => window.__pdesurf.solveCount);

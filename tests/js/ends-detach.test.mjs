@@ -30,15 +30,18 @@ function solvedState(scene) {
 }
 
 test('a curvature end detached beside a tangency end: explicit orders, the scene loads and gives the same surface', () => {
-  const scene = fillet();
-  scene.patches[0].ends.u1.continuity = 'curvature'; // u0 stays tangency: the solver infers order 6 from u1
-  const { state, result } = solvedState(scene);
+  const first = solvedState(fillet());
+  const state = first.state;
+  state.setEndField('fillet', 'u1', 'continuity', 'curvature'); // as the page does: u0 stays tangency
+  const result = solver.solve(state.text(), grid);
+  state.noteSolved(result.patches);
   const blend = result.patches[0];
+  assert.equal(blend.operator.x.order, 6);
   assert.equal(blend.ends.u1.derived.x.length, 3);
   state.detachEnd('fillet', 'u1', blend.ends.u1.derived);
   const written = state.patch('fillet');
   assert.deepEqual(Object.keys(written.ends), ['u0']);
-  assert.deepEqual(written.operator, { order: 6, b: 1, c: 2, d: 1 }, 'the remaining tangency end alone would infer order 4');
+  assert.deepEqual(written.operator, { order: 6, a: 1 }, 'the remaining tangency end alone would infer order 4');
   const again = solver.solve(state.text(), grid).patches[0];
   assert.ok(maxDiff(again.positions, blend.positions) < 1e-9, `${maxDiff(again.positions, blend.positions)}`);
   assert.equal(checksum(again.positions), checksum(blend.positions));
@@ -52,10 +55,12 @@ test('a curvature end detached beside a tangency end: explicit orders, the scene
 
 test('a derived text over the expression limit is not written: the end keeps its reference, and says why', () => {
   const scene = fillet();
-  // A sphere whose x carries a long (but valid) sum: its derived x(1) exceeds 1000 characters.
+  // A sphere whose x carries a sum in t, met along a curve: tau(v) replaces each t, so the
+  // derived x(1) exceeds 1000 characters while every typed expression is within them.
   const sphere = scene.patches.find((p) => p.name === 'sphere');
-  const extra = Array.from({ length: 40 }, (_, k) => `0.0001*cos(${k + 2}*v)*sin(t)`).join(' + ');
+  const extra = Array.from({ length: 24 }, (_, k) => `0.0001*cos(${k + 2}*v)*sin(t)`).join(' + ');
   sphere.x = `${sphere.x} + ${extra}`;
+  scene.patches[0].ends.u1.at = { t: 'th0 + 0.1 + 0.05*sin(v)', replaces: 't0' };
   assert.ok(sphere.x.length <= EXPRESSION_CHARS);
   const { state, result } = solvedState(scene);
   const derived = result.patches[0].ends.u1.derived;
