@@ -70,6 +70,14 @@ const DerivedEnd* trimOf(const std::vector<DerivedEnd>& all, const Patch* surfac
 
 void checkRules(const std::vector<DerivedEnd>& all) {
   for (const DerivedEnd& d : all) {
+    // Both ends of one blend on one border: it would start and end on the same curve.
+    if (d.end == 1 && &d != &all.front()) {
+      const DerivedEnd& o = *(&d - 1);
+      if (o.blend == d.blend && o.surface == d.surface && !o.ref->curve && !d.ref->curve && o.ref->atT1 == d.ref->atT1)
+        fail(ErrorCode::InvalidField, d.ref->path + ".at",
+             std::string("meets ") + edgeName(d.ref->atT1) + " of '" + d.ref->surface + "', as " + o.ref->path +
+                 " does: the blend would start and end on the same curve");
+    }
     const DerivedEnd* cut = trimOf(all, d.surface);
     if (!cut || cut == &d) continue;
     if (d.ref->curve)

@@ -105,6 +105,9 @@ TEST_CASE("v3 rules: both ends of one blend on one surface (t0 and t1)") {
   const json s = sceneOf(json::array({blend("under", end("half", "t0"), end("half", "t1")),
                                       surface("half", "(2 + cos(pi*t))*cos(v)", "(2 + cos(pi*t))*sin(v)", "sin(pi*t)", {0, 1})}));
   CHECK(errorOf(s) == "");
+  json same = s;
+  same["patches"][0]["ends"]["u1"]["at"] = "t0";  // both on one border: no blend between them
+  CHECK(errorOf(same) == "InvalidField: patches[0].ends.u1.at: meets t0 of 'half', as patches[0].ends.u0 does: the blend would start and end on the same curve");
   const Scene scene = parseScene(s.dump());
   const auto solved = solveScene(scene);
   const SceneReport r = checkScene(scene, solved, 48);
