@@ -267,4 +267,13 @@ describe('solver messages about ends', () => {
     assert.equal(endErrorField('patches[1].ends.u0: a surface trimmed twice', 1, 'u0'), 'end');
     assert.equal(endErrorField('patches[0].operator.order: curvature at u1', 0, 'u1'), null);
   });
+
+  it('a message naming two ends is about the first', () => {
+    const both = "patches[2].ends.u0.at: meets t1 of 'cyl', which patches[1].ends.u1 replaces by a curve";
+    assert.equal(endErrorField(both, 2, 'u0'), 'at');
+    assert.equal(endErrorField(both, 1, 'u1'), null);
+    const same = "patches[0].ends.u1.at: meets t0 of 'plane', as patches[0].ends.u0 does: the blend would start and end on the same curve";
+    assert.equal(endErrorField(same, 0, 'u1'), 'at');
+    assert.equal(endErrorField(same, 0, 'u0'), null);
+  });
 });

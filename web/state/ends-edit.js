@@ -278,9 +278,11 @@ export function detach(patch, end, derived, orders) {
 export function endErrorField(message, index, end) {
   const prefix = `patches[${index}].ends.${end}`;
   const text = String(message);
-  const at = text.indexOf(prefix);
-  if (at < 0) return null;
-  const rest = text.slice(at + prefix.length);
+  // The end a message is about is the first it names ("patches[2].ends.u0.at: meets t1 of
+  // 'cyl', which patches[1].ends.u1 replaces by a curve" is about patches[2].ends.u0).
+  const first = /patches\[\d+\]\.ends\.u[01]/.exec(text);
+  if (!first || first[0] !== prefix) return null;
+  const rest = text.slice(first.index + prefix.length);
   const m = /^\.([A-Za-z_]+)/.exec(rest);
   if (m) return m[1];
   return /^[:\s]/.test(rest) || rest === '' ? 'end' : null;
