@@ -109,24 +109,18 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
         }
       }
   }
-  // The cell row of patch p along its join with patch q (skipped in that pair), or -1.
-  auto joinRow = [&](int p, int q, bool* alongU) -> int {
-    const Patch& pp = *solved[p].patch;
+  // Whether triangle t of patch p lies in the cell row along a join with patch q (a pair
+  // may share several joins: both ends of a blend on one surface).
+  auto skipped = [&](const Tri& t, int q) {
+    const Patch& pp = *solved[t.patch].patch;
     const Patch& qq = *solved[q].patch;
-    if (qq.kind == PatchKind::Primary && qq.meets.patch == pp.name) {
-      *alongU = qq.meets.alongU;
-      return qq.meets.end ? grid - 1 : 0;
-    }
-    if (pp.kind == PatchKind::Primary && pp.meets.patch == qq.name) {
-      *alongU = false;
-      return pp.meets.atT1 ? grid - 1 : 0;
-    }
-    return -1;
-  };
-  auto skipped = [&](const Tri& t, int other) {
-    bool alongU = false;
-    const int row = joinRow(t.patch, other, &alongU);
-    return row >= 0 && (alongU ? t.j : t.i) == row;
+    if (qq.kind == PatchKind::Primary)
+      for (const Meets& m : qq.meets)
+        if (m.patch == pp.name && (m.alongU ? t.j : t.i) == (m.end ? grid - 1 : 0)) return true;
+    if (pp.kind == PatchKind::Primary)
+      for (const Meets& m : pp.meets)
+        if (m.patch == qq.name && t.i == (m.atT1 ? grid - 1 : 0)) return true;
+    return false;
   };
   // Uniform spatial hash with cells about twice a triangle's size.
   const double h = std::max(2.0 * edgeSum / std::max<size_t>(1, tris.size()), 1e-12 * size);

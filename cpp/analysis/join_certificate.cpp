@@ -54,8 +54,7 @@ double normalCurvature(const EdgePoint& p, const Eigen::Vector3d& n, const Eigen
   return II / (a * a * I(0, 0) + 2 * a * b * I(0, 1) + b * b * I(1, 1));
 }
 
-JoinResult certifyOne(const Patch& primary, const SolvedPatch& prim, const SolvedPatch& target, double size) {
-  const Meets& m = primary.meets;
+JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size) {
   const SeparableSurface& ts = target.surface;
   JoinResult r;
   r.patch = m.patch;
@@ -143,14 +142,17 @@ std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<Solve
   std::vector<JoinResult> out;
   for (size_t i = 0; i < solved.size(); ++i) {
     const Patch& p = *solved[i].patch;
-    if (p.kind != PatchKind::Primary || p.meets.patch.empty()) continue;
-    const SolvedPatch& target = solvedOf(solved, p.meets.patch);
-    try {
-      out.push_back(certifyOne(p, solved[i], target, size));
-    } catch (const Error& e) {
-      size_t index = 0;
-      while (index < scene.patches.size() && &scene.patches[index] != &p) ++index;
-      throw Error(e.code(), "patches[" + std::to_string(index) + "].meets: " + e.what());
+    if (p.kind != PatchKind::Primary) continue;
+    for (const Meets& m : p.meets) {
+      const SolvedPatch& target = solvedOf(solved, m.patch);
+      try {
+        out.push_back(certifyOne(p, m, solved[i], target, size));
+      } catch (const Error& e) {
+        // A join derived from an end is that end's; the scene's own is the surface's `meets`.
+        size_t index = 0;
+        while (index < scene.patches.size() && &scene.patches[index] != &p) ++index;
+        throw Error(e.code(), (m.by.empty() ? "patches[" + std::to_string(index) + "].meets" : m.by) + ": " + e.what());
+      }
     }
   }
   return out;

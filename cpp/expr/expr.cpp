@@ -89,7 +89,7 @@ Expr call(ExprFn f, const Expr& a) {
 }
 
 const char* exprFnName(ExprFn f) {
-  static const char* names[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "abs", "general"};
+  static const char* names[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "abs", "sign", "general"};
   return names[static_cast<int>(f)];
 }
 
@@ -117,6 +117,7 @@ double applyFn(ExprFn f, double x) {
     case ExprFn::Cosh: return std::cosh(x);
     case ExprFn::Tanh: return std::tanh(x);
     case ExprFn::Abs: return std::abs(x);
+    case ExprFn::Sign: return std::isnan(x) ? x : (x > 0) - (x < 0);
     case ExprFn::General: return x;
   }
   return NAN;
@@ -257,7 +258,8 @@ Expr derivative(const Expr& e, ExprVar var) {
         case ExprFn::Sinh: outer = call(ExprFn::Cosh, a); break;
         case ExprFn::Cosh: outer = call(ExprFn::Sinh, a); break;
         case ExprFn::Tanh: outer = subtract(constant(1.0), multiply(e, e)); break;
-        case ExprFn::Abs: outer = divide(a, e); break;  // sign(a); undefined at 0 like abs'
+        case ExprFn::Abs: outer = call(ExprFn::Sign, a); break;  // 0 at the kink: the one-sided derivatives' mean
+        case ExprFn::Sign: return constant(0.0);
         case ExprFn::General: return da;
       }
       return multiply(outer, da);

@@ -11,7 +11,8 @@ namespace pdesurf {
 // V is v; U is the other variable: u in forces, t in primary surfaces.
 enum class ExprVar { V = 0, U = 1 };
 // General is the identity that keeps its argument out of the closed form (general(exp(v))).
-enum class ExprFn { Sqrt, Exp, Log, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Abs, General };
+// Sign is abs's derivative: sign(0) = 0, the mean of abs's one-sided derivatives at its kink.
+enum class ExprFn { Sqrt, Exp, Log, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Abs, Sign, General };
 
 struct ExprNode;
 using Expr = std::shared_ptr<const ExprNode>;

@@ -3,10 +3,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "common/limits.hpp"
 #include "scene/expression_fields.hpp"
+#include "scene/trimline_checks.hpp"
 
 namespace pdesurf {
 
@@ -15,13 +15,6 @@ namespace {
 constexpr int kSamples = 129;  // along the trimline, for the checks and the power's scale
 
 using Vec3Expr = std::array<Expr, 3>;
-
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
 
 [[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
@@ -38,19 +31,25 @@ Vec3Expr onTrimline(const Vec3Expr& e, const Expr& tau) {
   return {substitute(e[0], ExprVar::U, tau), substitute(e[1], ExprVar::U, tau), substitute(e[2], ExprVar::U, tau)};
 }
 
-Vec3Expr dv(const Vec3Expr& e) { return {derivative(e[0], ExprVar::V), derivative(e[1], ExprVar::V), derivative(e[2], ExprVar::V)}; }
+const char* edgeName(bool t1) { return t1 ? "t1" : "t0"; }
 
-// One referenced end: the surface's position and t-derivatives on its trimline, in v.
+// One referenced end: the surface's position and t-derivatives on its trimline, in v, all in
+// the surface's own (untrimmed) parametrisation.
 struct DerivedEnd {
+  Patch* blend = nullptr;
+  int end = 0;
+  EndReference* ref = nullptr;
   Patch* surface = nullptr;
   size_t surfaceIndex = 0;
-  Expr tau;
-  Vec3Expr P, T, C;
+  TrimlineExprs e;
   double meanT = 0.0;  // mean |S_t| along the trimline
 };
 
-DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
+// Step 1: the surface an end names (a "surface" patch), untouched.
+DerivedEnd locate(Scene& scene, Patch& blend, int end) {
   DerivedEnd d;
+  d.blend = &blend, d.end = end, d.ref = &blend.ends[end];
+  const EndReference& ref = *d.ref;
   for (size_t i = 0; i < scene.patches.size(); ++i)
     if (scene.patches[i].name == ref.surface) d.surface = &scene.patches[i], d.surfaceIndex = i;
   if (!d.surface) fail(ErrorCode::UnknownName, ref.path + ".surface", "no patch named '" + ref.surface + "'");
@@ -58,55 +57,47 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
   if (s.kind != PatchKind::Primary || !s.primary.full[0] || !s.primary.full[1] || !s.primary.full[2])
     fail(ErrorCode::InvalidField, ref.path + ".surface",
          "'" + ref.surface + "' is a " + s.kindName + " patch; an end refers to a \"surface\" patch (expressions in t and v)");
-  if (s.primary.trimmed)
-    fail(ErrorCode::InvalidField, ref.path + ".surface", "'" + ref.surface + "' is already trimmed along a curve by another end");
-  const PrimarySurface& S = s.primary;
-  d.tau = ref.curve ? ref.tau : constant(ref.atT1 ? S.t1 : S.t0);
-  d.P = onTrimline(S.full, d.tau);
-  d.T = onTrimline(map3(S.full, derivative), d.tau);
-  d.C = onTrimline(map3(map3(S.full, derivative), derivative), d.tau);
-
-  // The checks, along the blend's v-range.
-  const double bv0 = blend.pde.v0, bv1 = blend.pde.v1;
-  const double vtol = 1e-9 * std::max(1.0, std::abs(S.v1 - S.v0));
-  if (std::min(bv0, bv1) < std::min(S.v0, S.v1) - vtol || std::max(bv0, bv1) > std::max(S.v0, S.v1) + vtol)
-    fail(ErrorCode::InvalidField, ref.path + ".surface",
-         "the blend's v_range [" + num(bv0) + ", " + num(bv1) + "] is not inside the v_range [" + num(S.v0) + ", " + num(S.v1) + "] of '" + ref.surface + "'");
-  const Vec3Expr dP = dv(d.P);
-  const double ttol = 1e-9 * std::max(1.0, std::abs(S.t1 - S.t0));
-  std::vector<Eigen::Vector3d> Ts, alongs;  // S_t and the trimline's tangent at each sample
-  double maxT = 0.0;
-  for (int k = 0; k < kSamples; ++k) {
-    const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
-    const double vars[2] = {v, 0.0};
-    const double t = evaluate(*d.tau, vars);
-    if (!std::isfinite(t)) fail(ErrorCode::NonFinite, ref.path + ".at", "the trimline is not finite at v = " + num(v));
-    if (t < std::min(S.t0, S.t1) - ttol || t > std::max(S.t0, S.t1) + ttol)
-      fail(ErrorCode::InvalidField, ref.path + ".at",
-           "the trimline t = " + num(t) + " at v = " + num(v) + " is outside the t_range [" + num(S.t0) + ", " + num(S.t1) + "] of '" + ref.surface + "'");
-    const Eigen::Vector3d P = eval3(d.P, v), T = eval3(d.T, v), C = eval3(d.C, v);
-    if (!P.allFinite() || !std::isfinite(T.norm()) || (ref.continuity == Continuity::Curvature && !C.allFinite()))
-      fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + num(v));
-    const double p = evaluate(*ref.power, vars);
-    if (!std::isfinite(p)) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + num(v));
-    Ts.push_back(T);
-    alongs.push_back(eval3(dP, v));
-    maxT = std::max(maxT, T.norm());
-  }
-  for (int k = 0; k < kSamples; ++k) {
-    const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
-    const Eigen::Vector3d& T = Ts[k];
-    const Eigen::Vector3d& along = alongs[k];
-    if (!(T.norm() > 1e-9 * maxT))
-      fail(ErrorCode::InvalidField, ref.path, "dS/dt of '" + ref.surface + "' vanishes on the trimline at v = " + num(v) + ": no direction across it");
-    // A trimline that stops (a pole) has no direction to be parallel to.
-    if (along.allFinite() && along.norm() > 1e-9 * maxT && T.cross(along).norm() < 1e-6 * T.norm() * along.norm())
-      fail(ErrorCode::InvalidField, ref.path, "dS/dt of '" + ref.surface + "' is parallel to the trimline at v = " + num(v) + ": no direction across it");
-  }
-  double sum = 0.0;
-  for (const Eigen::Vector3d& T : Ts) sum += T.norm();
-  d.meanT = sum / kSamples;
   return d;
+}
+
+// Step 2: the rules between ends, whatever the patches' order: a surface is trimmed along one
+// curve at most, and the border that curve replaces is met by no other end.
+const DerivedEnd* trimOf(const std::vector<DerivedEnd>& all, const Patch* surface) {
+  for (const DerivedEnd& d : all)
+    if (d.surface == surface && d.ref->curve) return &d;
+  return nullptr;
+}
+
+void checkRules(const std::vector<DerivedEnd>& all) {
+  for (const DerivedEnd& d : all) {
+    // Both ends of one blend on one border: it would start and end on the same curve.
+    if (d.end == 1 && &d != &all.front()) {
+      const DerivedEnd& o = *(&d - 1);
+      if (o.blend == d.blend && o.surface == d.surface && !o.ref->curve && !d.ref->curve && o.ref->atT1 == d.ref->atT1)
+        fail(ErrorCode::InvalidField, d.ref->path + ".at",
+             std::string("meets ") + edgeName(d.ref->atT1) + " of '" + d.ref->surface + "', as " + o.ref->path +
+                 " does: the blend would start and end on the same curve");
+    }
+    const DerivedEnd* cut = trimOf(all, d.surface);
+    if (!cut || cut == &d) continue;
+    if (d.ref->curve)
+      fail(ErrorCode::InvalidField, d.ref->path + ".at",
+           "'" + d.ref->surface + "' is already trimmed along a curve by " + cut->ref->path + "; a surface can be trimmed along one curve only");
+    if (d.ref->atT1 == cut->ref->atT1)
+      fail(ErrorCode::InvalidField, d.ref->path + ".at",
+           std::string("meets ") + edgeName(d.ref->atT1) + " of '" + d.ref->surface + "', which " + cut->ref->path + " replaces by a curve");
+  }
+}
+
+// Step 3: S, S_t (and S_tt) on the trimline, checked.
+void derive(DerivedEnd& d) {
+  const EndReference& ref = *d.ref;
+  const PrimarySurface& S = d.surface->primary;
+  d.e.tau = ref.curve ? ref.tau : constant(ref.atT1 ? S.t1 : S.t0);
+  d.e.P = onTrimline(S.full, d.e.tau);
+  d.e.T = onTrimline(map3(S.full, derivative), d.e.tau);
+  d.e.C = onTrimline(map3(map3(S.full, derivative), derivative), d.e.tau);
+  d.meanT = checkTrimline(ref, S, d.e, d.blend->pde.v0, d.blend->pde.v1);
 }
 
 // Mean distance between the two ends' curves over the blend's v-range.
@@ -120,7 +111,67 @@ double meanGap(const std::array<Vec3Expr, 2>& pos, double v0, double v1) {
   return sum / kSamples;
 }
 
-// The surface met along a curve is drawn from its trimline: t = tau + s (t_far - tau), s in [0, 1].
+// The blend's boundary slots from its ends (derived, or typed for the extra conditions).
+void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& derived) {
+  std::array<Vec3Expr, 2> pos;
+  for (int end = 0; end < 2; ++end) {
+    if (derived[end]) {
+      pos[end] = derived[end]->e.P;
+    } else {
+      for (int c = 0; c < 3; ++c) pos[end][c] = blend.typedPosition[end][c] ? blend.typedPosition[end][c] : constant(0.0);
+    }
+  }
+  const double gap = meanGap(pos, blend.pde.v0, blend.pde.v1);
+  for (int end = 0; end < 2; ++end) {
+    if (!derived[end]) continue;
+    EndReference& ref = blend.ends[end];
+    const DerivedEnd& d = *derived[end];
+    // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
+    // ends touch); "surface": power 1 continues the surface's t at its own speed.
+    const double k = ref.surfaceScale ? 1.0 : (gap > 0 ? gap : 1.0) / d.meanT;
+    const double away = (ref.atT1 ? 1.0 : -1.0) * (ref.flip ? -1.0 : 1.0);  // the blend's side, in t
+    const double sign = end == 0 ? away : -away;
+    const int level = static_cast<int>(ref.continuity);
+    for (int c = 0; c < 3; ++c) {
+      ComponentProblem& cp = blend.pde.component[c];
+      std::vector<VExpansion>& slots = end == 0 ? cp.left : cp.right;
+      const int n = blend.op[c].order / 2;
+      slots.assign(n, {});
+      std::array<Expr, 3> e;
+      e[0] = d.e.P[c];
+      if (n >= 2) e[1] = level >= 1 ? multiply(constant(sign * k), multiply(ref.power, d.e.T[c])) : subtract(pos[1][c], pos[0][c]);
+      if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.e.C[c])) : constant(0.0);
+      ref.derived[c].clear();
+      for (int i = 0; i < n; ++i) {
+        if (nodeCount(e[i]) > limits::kDerivedNodes)
+          fail(ErrorCode::TooLarge, ref.path, std::string("the derived condition of ") + "xyz"[c] + " has more than " +
+                                                 std::to_string(limits::kDerivedNodes) + " nodes: simplify the surface's expression");
+        ref.derived[c].push_back(toText(e[i]));
+        slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
+      }
+    }
+  }
+}
+
+// Step 4: the join, in the surface's drawn parametrisation: a trimmed surface runs from its
+// curve (t0 = 0) to the border the curve does not replace (t1 = 1).
+void recordJoin(const DerivedEnd& d, bool trimmed) {
+  const EndReference& ref = *d.ref;
+  Meets m;
+  m.patch = d.blend->name;
+  m.end = d.end;
+  m.atT1 = ref.curve ? false : trimmed ? true : ref.atT1;
+  m.by = ref.path;
+  for (const Meets& have : d.surface->meets) {
+    if (have.patch != m.patch || have.end != m.end || have.alongU) continue;
+    if (have.atT1 == m.atT1) return;  // already recorded (the scene's own meets says the same)
+    fail(ErrorCode::InvalidField, "patches[" + std::to_string(d.surfaceIndex) + "].meets",
+         "disagrees with " + ref.path + " (which makes edge " + edgeName(m.atT1) + " meet " + (d.end ? "u1" : "u0") + ")");
+  }
+  d.surface->meets.push_back(m);
+}
+
+// Step 5: the surface met along a curve is drawn from its trimline: t = tau + s (t_far - tau), s in [0, 1].
 void trim(Patch& surface, const EndReference& ref) {
   PrimarySurface& S = surface.primary;
   const Expr tFar = constant(ref.atT1 ? S.t0 : S.t1);
@@ -134,70 +185,31 @@ void trim(Patch& surface, const EndReference& ref) {
   S.trimmed = true;
 }
 
-void recordJoin(const DerivedEnd& d, const Patch& blend, const EndReference& ref, int end) {
-  Meets m;
-  m.patch = blend.name;
-  m.end = end;
-  m.atT1 = ref.curve ? false : ref.atT1;
-  Meets& have = d.surface->meets;
-  if (have.patch.empty()) {
-    have = m;
-    return;
-  }
-  if (have.patch == m.patch && (have.end != m.end || have.atT1 != m.atT1 || have.alongU))
-    fail(ErrorCode::InvalidField, "patches[" + std::to_string(d.surfaceIndex) + "].meets",
-         "disagrees with " + ref.path + " (which makes edge " + (m.atT1 ? "t1" : "t0") + " meet " + (end ? "u1" : "u0") + ")");
-}
-
 }  // namespace
 
+// Every end is resolved against the untrimmed surfaces before anything is trimmed, so the
+// result does not depend on the patches' order: find every end's surface, check the rules
+// between ends, derive and check every end, write every blend's conditions, record every
+// join in the trimmed parametrisation, and only then trim.
 void deriveEnds(Scene& scene) {
+  std::vector<DerivedEnd> all;
   for (Patch& blend : scene.patches) {
-    if (blend.kind != PatchKind::Pde || !(blend.ends[0].given || blend.ends[1].given)) continue;
-    std::array<DerivedEnd, 2> derived;
-    std::array<Vec3Expr, 2> pos;
-    for (int end = 0; end < 2; ++end) {
-      if (blend.ends[end].given) {
-        derived[end] = resolve(scene, blend, blend.ends[end]);
-        pos[end] = derived[end].P;
-      } else {
-        for (int c = 0; c < 3; ++c) pos[end][c] = blend.typedPosition[end][c] ? blend.typedPosition[end][c] : constant(0.0);
-      }
-    }
-    const double gap = meanGap(pos, blend.pde.v0, blend.pde.v1);
-    for (int end = 0; end < 2; ++end) {
-      EndReference& ref = blend.ends[end];
-      if (!ref.given) continue;
-      const DerivedEnd& d = derived[end];
-      // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
-      // ends touch); "surface": power 1 continues the surface's t at its own speed.
-      const double k = ref.surfaceScale ? 1.0 : (gap > 0 ? gap : 1.0) / d.meanT;
-      const double away = (ref.atT1 ? 1.0 : -1.0) * (ref.flip ? -1.0 : 1.0);  // the blend's side, in t
-      const double sign = end == 0 ? away : -away;
-      const int level = static_cast<int>(ref.continuity);
-      for (int c = 0; c < 3; ++c) {
-        ComponentProblem& cp = blend.pde.component[c];
-        std::vector<VExpansion>& slots = end == 0 ? cp.left : cp.right;
-        const int n = blend.op[c].order / 2;
-        slots.assign(n, {});
-        std::array<Expr, 3> e;
-        e[0] = d.P[c];
-        if (n >= 2) e[1] = level >= 1 ? multiply(constant(sign * k), multiply(ref.power, d.T[c])) : subtract(pos[1][c], pos[0][c]);
-        if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.C[c])) : constant(0.0);
-        ref.derived[c].clear();
-        for (int i = 0; i < n; ++i) {
-          if (nodeCount(e[i]) > limits::kDerivedNodes)
-            fail(ErrorCode::TooLarge, ref.path, std::string("the derived condition of ") + "xyz"[c] + " has more than " +
-                                                   std::to_string(limits::kDerivedNodes) + " nodes: simplify the surface's expression");
-          ref.derived[c].push_back(toText(e[i]));
-          slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
-        }
-      }
-      recordJoin(d, blend, ref, end);
-    }
+    if (blend.kind != PatchKind::Pde) continue;
     for (int end = 0; end < 2; ++end)
-      if (blend.ends[end].given && blend.ends[end].curve) trim(*derived[end].surface, blend.ends[end]);
+      if (blend.ends[end].given) all.push_back(locate(scene, blend, end));
   }
+  if (all.empty()) return;
+  checkRules(all);
+  for (DerivedEnd& d : all) derive(d);
+  for (size_t i = 0; i < all.size();) {
+    std::array<const DerivedEnd*, 2> ends = {nullptr, nullptr};
+    Patch* blend = all[i].blend;
+    for (; i < all.size() && all[i].blend == blend; ++i) ends[all[i].end] = &all[i];
+    writeConditions(*blend, ends);
+  }
+  for (const DerivedEnd& d : all) recordJoin(d, trimOf(all, d.surface) != nullptr);
+  for (const DerivedEnd& d : all)
+    if (d.ref->curve) trim(*d.surface, *d.ref);
 }
 
 }  // namespace pdesurf

@@ -16,10 +16,14 @@
 
 namespace pdesurf {
 
-// Derives every referenced end of every pde patch into its boundary slots, trims surfaces met
-// along a curve (their t becomes 0..1 from the trimline) and records the joins (meets) for
-// the certificate. Throws Error(UnknownName | InvalidField | NonFinite) naming the end and,
-// where it applies, the v at fault.
+// Derives every referenced end of every pde patch into its boundary slots, records the joins
+// (meets, one per end) for the certificate and trims surfaces met along a curve (their t
+// becomes 0..1 from the trimline), in an order that does not depend on the patches': every
+// end is derived and checked (scene/trimline_checks.hpp) on the untrimmed surfaces, the joins
+// are recorded in the trimmed parametrisation, the trims come last. A surface is trimmed along
+// one curve at most, and the border it replaces is met by no other end. Throws
+// Error(UnknownName | InvalidField | NonFinite | TooLarge) naming the end and, where it
+// applies, the v at fault.
 void deriveEnds(Scene& scene);
 
 }  // namespace pdesurf

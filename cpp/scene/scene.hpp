@@ -72,6 +72,9 @@ struct Meets {
   // The primary's v-interval that the patch's border parameter maps onto linearly; unset
   // (NaN): a PDE blend shares v with the primary, a Bézier border maps [0, 1] onto v_range.
   double v0 = NAN, v1 = NAN;
+  // Version 3: the end that made this join ("patches[2].ends.u0", for errors); empty: the
+  // scene's own `meets`.
+  std::string by;
 };
 
 // The operator of one coordinate as the scene names it, resolved to numbers: order 2 {s, t},
@@ -85,7 +88,10 @@ struct ComponentOperator {
 struct Patch {
   std::string name;
   std::string kindName;  // as the scene says: "pde", "ruled", "separable"
-  Meets meets;          // Primary only; meets.patch empty when not given
+  // Primary only: its joins, one per edge and patch end: the scene's own `meets` first (when
+  // given), then those of the version-3 ends that name it (scene/derived_ends.hpp), in the
+  // drawn parametrisation (a surface trimmed along a curve has the curve at t = t0 = 0).
+  std::vector<Meets> meets;
   PatchKind kind = PatchKind::Pde;
   std::array<ComponentOperator, 3> op;  // Pde only
   PdeProblem pde;                       // Pde only

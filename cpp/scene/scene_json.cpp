@@ -64,21 +64,22 @@ void parseMeets(const json& j, const std::string& path, const Resolver& r, Patch
   if (!j.contains("meets")) return;
   const std::string mp = path + ".meets";
   allowOnly(j["meets"], mp, {"patch", "end", "at", "v_range"});
-  patch.meets.patch = stringField(require(j["meets"], "patch", mp), mp + ".patch", 64);
+  Meets& meets = patch.meets.emplace_back();
+  meets.patch = stringField(require(j["meets"], "patch", mp), mp + ".patch", 64);
   const std::string end = stringField(require(j["meets"], "end", mp), mp + ".end");
   if (end != "u0" && end != "u1" && end != "v0" && end != "v1")
     fail(ErrorCode::InvalidField, mp + ".end", "expected \"u0\", \"u1\" (or, for a bezier patch, \"v0\", \"v1\")");
-  patch.meets.end = end[1] == '0' ? 0 : 1;
-  patch.meets.alongU = end[0] == 'v';
+  meets.end = end[1] == '0' ? 0 : 1;
+  meets.alongU = end[0] == 'v';
   if (j["meets"].contains("v_range")) {
     const auto vr = r.range(j["meets"], "v_range", mp, 0.0, 1.0);
     if (vr[0] == vr[1]) fail(ErrorCode::InvalidField, mp + ".v_range", "the interval is empty");
-    patch.meets.v0 = vr[0], patch.meets.v1 = vr[1];
+    meets.v0 = vr[0], meets.v1 = vr[1];
   }
   if (j["meets"].contains("at")) {
     const std::string at = stringField(j["meets"]["at"], mp + ".at");
     if (at != "t0" && at != "t1") fail(ErrorCode::InvalidField, mp + ".at", "expected \"t0\" or \"t1\"");
-    patch.meets.atT1 = at == "t1";
+    meets.atT1 = at == "t1";
   }
 }
 
@@ -222,16 +223,16 @@ static Scene parseSceneUnchecked(const std::string& text) {
     scene.patches.push_back(std::move(patch));
   }
   deriveEnds(scene);  // version 3: ends by reference, once every surface is known
-  for (size_t i = 0; i < scene.patches.size(); ++i) {
-    const Meets& m = scene.patches[i].meets;
-    if (m.patch.empty()) continue;
-    const Patch* target = scene.find(m.patch);
-    const std::string mp = "patches[" + std::to_string(i) + "].meets";
-    if (!target || (target->kind != PatchKind::Pde && target->kind != PatchKind::Bezier))
-      fail(ErrorCode::UnknownName, mp + ".patch", "no pde or bezier patch named '" + m.patch + "'");
-    if (m.alongU && target->kind != PatchKind::Bezier)
-      fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");
-  }
+  for (size_t i = 0; i < scene.patches.size(); ++i)
+    for (const Meets& m : scene.patches[i].meets) {
+      if (!m.by.empty()) continue;  // derived from an end: its patch is that end's blend
+      const Patch* target = scene.find(m.patch);
+      const std::string mp = "patches[" + std::to_string(i) + "].meets";
+      if (!target || (target->kind != PatchKind::Pde && target->kind != PatchKind::Bezier))
+        fail(ErrorCode::UnknownName, mp + ".patch", "no pde or bezier patch named '" + m.patch + "'");
+      if (m.alongU && target->kind != PatchKind::Bezier)
+        fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");
+    }
   return scene;
 }
 

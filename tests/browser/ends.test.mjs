@@ -275,6 +275,33 @@ describe('ends by reference in the page', { skip }, () => {
     assert.equal(await page.locator('#panel [data-functions="fillet"] [data-expr]').count(), 15);
   });
 
+  it('a curvature end detached beside a tangency end keeps order 6 and the surface', async () => {
+    await open('ref-sphere-fillet');
+    const g2 = await choose('fillet.u1', 'continuity', 'curvature (G2)');
+    const detached = await change(() => control('fillet.u1', 'detach').locator('button').click());
+    assert.equal(detached.lastError, null, 'the detached scene does not load');
+    assert.ok(sameChecksum(detached.checksum, g2.checksum));
+    const order = page.locator('#panel [data-patch="fillet"] [data-order="x"] select');
+    assert.equal(await order.evaluate((s) => s.options[s.selectedIndex].textContent), '6');
+  });
+
+  it('a derived text over the expression limit is not detached: the end stays by reference and says why', async () => {
+    const scene = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'ref-sphere-fillet.json'), 'utf8'));
+    const sphere = scene.patches.find((p) => p.name === 'sphere');
+    sphere.x += ' + ' + Array.from({ length: 24 }, (_, k) => `0.0001*cos(${k + 2}*v)*sin(t)`).join(' + ');
+    scene.patches[0].ends.u1.at = { t: 'th0 + 0.1 + 0.05*sin(v)', replaces: 't0' }; // tau in every t: x(1) > 1000 characters
+    const long = await h.open(`/web/#${await encodeState({ scene })}`);
+    await waitReady(long);
+    const before = await long.evaluate(() => window.__pdesurf.solveCount);
+    await long.locator('#panel [data-end="fillet.u1"] [data-end-field="detach"] button').click();
+    const message = long.locator('#panel [data-end="fillet.u1"] .end-error');
+    assert.match(await message.textContent(), /^cannot detach: the derived x\S* has \d+ characters, more than an expression may have \(1000\); the end stays by reference$/);
+    assert.ok(await message.isVisible());
+    assert.equal(await long.locator('#panel [data-end="fillet.u1"] [data-end-field="surface"]').count(), 1, 'the reference went');
+    assert.equal(await long.evaluate(() => window.__pdesurf.solveCount), before, 'a refused detach re-solved');
+    await long.close();
+  });
+
   it('the offset cylinders: G2 ends of order 6, their powers and continuity', async () => {
     const original = await open('ref-offset-cylinders-g2');
     assert.equal(await shownOption('transition.u0', 'continuity'), 'curvature (G2)');

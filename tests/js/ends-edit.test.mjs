@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import {
-  readEnd, setEndField, attach, attachDefaults, detach, withExplicitOrders, powerValue,
+  readEnd, setEndField, attach, attachDefaults, detach, detachRefusal, withExplicitOrders, powerValue,
   canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField, neededOrder, isByReference,
 } from '../../web/state/ends-edit.js';
 import { createSceneState } from '../../web/state/scene-state.js';
@@ -174,6 +174,27 @@ describe('attach and detach', () => {
     assert.deepEqual(blend.boundary.x, { u1: DERIVED_U1.x, u0: ['2.2*cos(v)', '-1.7*cos(v)'] });
   });
 
+  it('detaching a curvature end beside a tangency end writes explicit orders (inference would drop to 4)', () => {
+    const blend = example('ref-sphere-fillet').patches[0];
+    blend.ends.u1.continuity = 'curvature';
+    blend.operator = { a: 1 }; // as setEndField raises it
+    const derived = { x: [...DERIVED_U1.x, '0'], y: [...DERIVED_U1.y, '0'], z: [...DERIVED_U1.z, '0'] };
+    detach(blend, 'u1', derived, { x: 6, y: 6, z: 6 });
+    assert.deepEqual(blend.operator, { order: 6, a: 1 });
+    assert.deepEqual(Object.keys(blend.ends), ['u0']);
+  });
+
+  it('detach refuses a text longer than an expression may be, and changes nothing', () => {
+    const blend = example('ref-sphere-fillet').patches[0];
+    const before = structuredClone(blend);
+    const long = { ...DERIVED_U1, y: [DERIVED_U1.y[0], `1 + ${'0.1*cos(v) + '.repeat(80)}0`] };
+    const why = detachRefusal('u1', long);
+    assert.match(why, /^cannot detach: the derived yᵤ\(1\) has \d+ characters, more than an expression may have \(1000\); the end stays by reference$/);
+    assert.throws(() => detach(blend, 'u1', long, ORDERS4), (e) => e.message === why);
+    assert.deepEqual(blend, before);
+    assert.equal(detachRefusal('u1', DERIVED_U1), null);
+  });
+
   it('detach refuses a typed end or missing derived texts, and changes nothing then', () => {
     const blend = example('ref-sphere-fillet').patches[0];
     const before = structuredClone(blend);
@@ -245,5 +266,14 @@ describe('solver messages about ends', () => {
     assert.equal(endErrorField('patches[12].ends.u0: both typed', 1, 'u0'), null);
     assert.equal(endErrorField('patches[1].ends.u0: a surface trimmed twice', 1, 'u0'), 'end');
     assert.equal(endErrorField('patches[0].operator.order: curvature at u1', 0, 'u1'), null);
+  });
+
+  it('a message naming two ends is about the first', () => {
+    const both = "patches[2].ends.u0.at: meets t1 of 'cyl', which patches[1].ends.u1 replaces by a curve";
+    assert.equal(endErrorField(both, 2, 'u0'), 'at');
+    assert.equal(endErrorField(both, 1, 'u1'), null);
+    const same = "patches[0].ends.u1.at: meets t0 of 'plane', as patches[0].ends.u0 does: the blend would start and end on the same curve";
+    assert.equal(endErrorField(same, 0, 'u1'), 'at');
+    assert.equal(endErrorField(same, 0, 'u0'), null);
   });
 });

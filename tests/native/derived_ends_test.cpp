@@ -275,7 +275,7 @@ TEST_CASE("by reference: bad references are named errors naming the end and the 
   json flat = with(end("plane", "t0", "tangency"));
   flat["patches"][1]["x"] = "r0*cos(v)";  // no t: dS/dt = 0
   flat["patches"][1]["y"] = "r0*sin(v)";
-  CHECK(errorOf(flat).find("InvalidField: patches[0].ends.u0: dS/dt of 'plane' vanishes on the trimline at v = 0") == 0);
+  CHECK(errorOf(flat).find("InvalidField: patches[0].ends.u0.at: dS/dt of 'plane' vanishes on the trimline at v = 0") == 0);
   json along = with(end("plane", "t0", "tangency"));
   along["patches"][1]["x"] = "r0*cos(v + t)";  // t runs along the trimline circle
   along["patches"][1]["y"] = "r0*sin(v + t)";

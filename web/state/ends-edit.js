@@ -216,12 +216,35 @@ export function withExplicitOrders(op, orders) {
   return out;
 }
 
+/** The longest expression a scene may hold (cpp/common/limits.hpp kExpressionChars). */
+export const EXPRESSION_CHARS = 1000;
+const PRIMES = ['', 'ᵤ', 'ᵤᵤ', 'ᵤᵤᵤ'];
+
+/**
+ * Why `derived` (the solver's { x: [X, X_u, (X_uu)], y, z } for end `end`) cannot be typed
+ * in: a text longer than an expression may be would make a scene that does not load. Null
+ * when it can.
+ */
+export function detachRefusal(end, derived) {
+  for (const axis of AXES) {
+    const list = Array.isArray(derived?.[axis]) ? derived[axis] : [];
+    const k = list.findIndex((t) => typeof t === 'string' && t.length > EXPRESSION_CHARS);
+    if (k >= 0) {
+      return `cannot detach: the derived ${axis}${PRIMES[k] ?? `^(${k})`}(${end === 'u0' ? 0 : 1}) has ${list[k].length} characters, `
+        + `more than an expression may have (${EXPRESSION_CHARS}); the end stays by reference`;
+    }
+  }
+  return null;
+}
+
 /**
  * Turn a referenced end into typed expressions: `derived` is the solver's
  * { x: [X, X_u, (X_uu)], y, z } for it (texts with the parameters' current values), written
- * into boundary.<axis>.<end>; `ends.<end>` goes (and `ends` when empty). When no end is
- * by reference any more, the operator gets explicit orders from `orders` (the resolved
- * { x, y, z }), since only a referenced end lets the solver infer them.
+ * into boundary.<axis>.<end>; `ends.<end>` goes (and `ends` when empty). The operator gets
+ * explicit orders from `orders` (the resolved { x, y, z }) when what the solver would infer
+ * from the ends left by reference differs (none left, or a curvature end detached beside a
+ * tangency one: the typed X_uu needs order 6 still). Refuses (throws, changing nothing) texts
+ * longer than an expression may be (detachRefusal).
  */
 export function detach(patch, end, derived, orders) {
   referenced(patch, end);
@@ -231,16 +254,20 @@ export function detach(patch, end, derived, orders) {
       throw new Error(`no derived conditions for ${axis} at ${end}`);
     }
   }
+  const refusal = detachRefusal(end, derived);
+  if (refusal) throw new Error(refusal);
+  const left = ENDS.filter((e) => e !== end && isByReference(patch, e));
+  const inferred = Math.max(0, ...left.map((e) => ORDER_FOR[readEnd(patch, e).continuity]));
+  const explicit = left.length === 0 || AXES.some((axis) => orders?.[axis] !== inferred);
+  const operator = explicit ? withExplicitOrders(patch.operator, orders) : patch.operator; // may throw: nothing changed yet
   if (!isObject(patch.boundary)) patch.boundary = {};
   for (const axis of AXES) {
     if (!isObject(patch.boundary[axis])) patch.boundary[axis] = {};
     patch.boundary[axis][end] = [...derived[axis]];
   }
   delete patch.ends[end];
-  if (Object.keys(patch.ends).length === 0) {
-    delete patch.ends;
-    patch.operator = withExplicitOrders(patch.operator, orders);
-  }
+  if (Object.keys(patch.ends).length === 0) delete patch.ends;
+  if (explicit) patch.operator = operator;
 }
 
 /**
@@ -251,9 +278,11 @@ export function detach(patch, end, derived, orders) {
 export function endErrorField(message, index, end) {
   const prefix = `patches[${index}].ends.${end}`;
   const text = String(message);
-  const at = text.indexOf(prefix);
-  if (at < 0) return null;
-  const rest = text.slice(at + prefix.length);
+  // The end a message is about is the first it names ("patches[2].ends.u0.at: meets t1 of
+  // 'cyl', which patches[1].ends.u1 replaces by a curve" is about patches[2].ends.u0).
+  const first = /patches\[\d+\]\.ends\.u[01]/.exec(text);
+  if (!first || first[0] !== prefix) return null;
+  const rest = text.slice(first.index + prefix.length);
   const m = /^\.([A-Za-z_]+)/.exec(rest);
   if (m) return m[1];
   return /^[:\s]/.test(rest) || rest === '' ? 'end' : null;

@@ -4,7 +4,7 @@
 
 // Names an expression already gives a meaning to (docs/scene-format-v2.md).
 const RESERVED = new Set(['pi', 'e', 'u', 'v', 't', 'general', 'sqrt', 'exp', 'log', 'sin', 'cos', 'tan',
-  'asin', 'acos', 'atan', 'sinh', 'cosh', 'tanh', 'abs']);
+  'asin', 'acos', 'atan', 'sinh', 'cosh', 'tanh', 'abs', 'sign']);
 const NAME = /^[A-Za-z_][A-Za-z0-9_]*$/;
 const MAX_NAME = 64;
 

@@ -14,7 +14,7 @@ import { buildPowerControl } from './power-control.js';
 import { buildDerivedFields } from './derived-fields.js';
 import {
   ENDS, TRIMLINES, ISO_LINES, CONTINUITIES, SCALES,
-  readEnd, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField,
+  readEnd, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField, detachRefusal,
 } from '../state/ends-edit.js';
 
 const TRIMLINE_LABELS = { t0: 't0 (iso-line)', t1: 't1 (iso-line)', curve: 'curve t = τ(v)' };
@@ -128,7 +128,10 @@ export function buildEndFolders(gui, scene, solved, handlers) {
   function addDetach(view) {
     const { folder, patch, end } = view;
     const detach = folder.add({ detach: () => {
-      if (view.current && !view.stale) handlers.onDetach(patch.name, end, view.current);
+      if (!view.current || view.stale) return;
+      const refusal = detachRefusal(end, view.current); // too long to type: keep the reference, say why here
+      if (refusal) showMessage(view, refusal);
+      else handlers.onDetach(patch.name, end, view.current);
     } }, 'detach').name(escapeHtml('detach: type these conditions'));
     detach.domElement.dataset.endField = 'detach';
     detach.domElement.title = `Turn the derived conditions into typed expressions in Functions “${patch.name}”. `
