@@ -186,6 +186,7 @@ struct Evaluator {
         for (size_t k = 1; k < K; ++k) r[k] *= sg;
         return r;
       }
+      case ExprFn::Sign: return constantS(K, applyFn(ExprFn::Sign, a[0]));  // flat on either side of 0
       case ExprFn::General: return a;
     }
     return constantS(K, NAN);
