@@ -139,6 +139,7 @@ void recordJoin(const DerivedEnd& d, const Patch& blend, const EndReference& ref
   m.patch = blend.name;
   m.end = end;
   m.atT1 = ref.curve ? false : ref.atT1;
+  m.curve = ref.curve, m.replacesT1 = ref.curve && ref.atT1;
   Meets& have = d.surface->meets;
   if (have.patch.empty()) {
     have = m;
