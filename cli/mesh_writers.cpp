@@ -7,17 +7,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/text.hpp"
 #include "number_text.hpp"
 
 namespace pdesurf::cli {
 
 // OBJ and the PLY header are line-based: a control character in a name would start a line of
-// its own. The scene parser refuses them already; this keeps the writers safe on their own.
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  return s;
-}
+// its own (for some readers NEL U+0085, U+2028 and U+2029 too). The scene parser refuses them
+// already; this keeps the writers safe on their own.
+std::string oneLine(std::string s) { return oneLineText(s); }
 
 MeshFormat parseMeshFormat(const std::string& name) {
   if (name == "obj") return MeshFormat::Obj;

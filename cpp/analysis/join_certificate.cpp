@@ -60,7 +60,8 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   r.patch = m.patch;
   r.end = std::string(m.alongU ? "v" : "u") + (m.end ? "1" : "0");
   r.surface = primary.name;
-  r.edge = m.atT1 ? "t1" : "t0";
+  // A trimmed surface's edge is its trimline (t = 0 after the trim): name the border it replaces.
+  r.edge = m.curve ? std::string("curve replacing ") + (m.replacesT1 ? "t1" : "t0") : m.atT1 ? "t1" : "t0";
   r.level = promisedLevel(*target.patch, m.alongU ? 0 : m.end);
   // The target's border parameter runs over its own range; the primary's v over the given
   // interval, else (PDE) the same v as the target, else (Bézier) the primary's v-range.
@@ -111,7 +112,7 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   }
   // Far beyond rounding: the primary's edge is not this border at all; a scene error.
   if (r.g0 > 1e-3)
-    throw Error(ErrorCode::InvalidField, "edge " + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
+    throw Error(ErrorCode::InvalidField, (m.curve ? "the " : "edge ") + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
                                              "': they are " + std::to_string(r.g0 * size) + " apart at v = " + std::to_string(r.worstV));
   r.ok = r.g0 <= kG0Tolerance && !r.fold && measured > 0 && (r.level < 1 || r.g1Deg <= kG1ToleranceDeg) &&
          (r.level < 2 || r.g2Rel <= kG2Tolerance);

@@ -21,7 +21,7 @@ struct JoinResult {
   std::string patch;    // the PDE or Bézier patch
   std::string end;      // "u0", "u1", "v0", "v1"
   std::string surface;  // the primary surface
-  std::string edge;     // "t0" or "t1"
+  std::string edge;     // "t0", "t1", or "curve replacing t0" / "curve replacing t1" (a trimline)
   int level = 0;        // promised: 0 G0, 1 G1, 2 G2
   double g0 = 0.0;      // largest gap / scene size
   double g1Deg = 0.0;   // largest tangent-plane angle, degrees (level >= 1 and measured)

@@ -1,6 +1,7 @@
 #include "basis/general_function.hpp"
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "expr/taylor.hpp"
 
 namespace pdesurf {
@@ -17,7 +18,7 @@ double GeneralFunction::eval(double v, int k) const {
   while (static_cast<int>(derivs_.size()) <= k) {
     Expr next = derivative(derivs_.back(), ExprVar::V);
     if (nodeCount(next) > kMaxDerivativeNodes)
-      throw Error(ErrorCode::InvalidField, "'" + text_ + "' is too complex to differentiate " + std::to_string(k) + " times");
+      throw Error(ErrorCode::TooLarge, "'" + clipText(text_, 200) + "' is too complex to differentiate " + std::to_string(k) + " times");
     derivs_.push_back(std::move(next));
   }
   return evaluate(*derivs_[k], vars);

@@ -42,10 +42,11 @@ size_t bezierAssemblyWork(int n, int m, int Nu, int Nv) {
 
 namespace {
 
-// The pair products of d^k/dt^k B^n on the nodes t, for k = 0..kmax.
-std::vector<MatrixXd> pairTables(int n, const std::vector<double>& t, int kmax) {
+// The pair products of d^k/dt^k B^n on the nodes t, for k = 0..kmax; with T, of the basis
+// Σ_i T(i, c) B_i^n (interior_basis.hpp) instead.
+std::vector<MatrixXd> pairTables(int n, const std::vector<double>& t, int kmax, const MatrixXd* T) {
   std::vector<MatrixXd> P;
-  for (int k = 0; k <= kmax; ++k) P.push_back(columnPairProducts(bernsteinTable(n, t, k)));
+  for (int k = 0; k <= kmax; ++k) P.push_back(columnPairProducts(T ? MatrixXd(bernsteinTable(n, t, k) * *T) : bernsteinTable(n, t, k)));
   return P;
 }
 
@@ -77,8 +78,10 @@ std::array<MatrixXd, 3> normalsOnGrid(const BezierNormalField& f, const NodeGrid
 
 }  // namespace
 
-BezierForms assembleBezierForms(const BezierProblem& p) {
-  const int n = p.n, m = p.m, K = (n + 1) * (m + 1);
+BezierForms assembleBezierForms(const BezierProblem& p, const MatrixXd* Tu, const MatrixXd* Tv) {
+  const int n = p.n, m = p.m;
+  const int nb = Tu ? static_cast<int>(Tu->cols()) - 1 : n, mb = Tv ? static_cast<int>(Tv->cols()) - 1 : m;  // the basis' "degrees"
+  const int K = (nb + 1) * (mb + 1);
   const BezierNormalField& f = p.normals;
   const bool thin = p.energy == BezierEnergy::ThinPlate;
   BezierForms out;
@@ -87,8 +90,8 @@ BezierForms assembleBezierForms(const BezierProblem& p) {
   {
     const NodeGrid g = gaussNodeGrid(n + 1, m + 1);
     const int order = thin ? 2 : 1;
-    const std::vector<MatrixXd> Pu = pairTables(n, g.u, order), Pv = pairTables(m, g.v, order);
-    TensorGram F(n, m);
+    const std::vector<MatrixXd> Pu = pairTables(n, g.u, order, Tu), Pv = pairTables(m, g.v, order, Tv);
+    TensorGram F(nb, mb);
     if (thin) {
       F.add(Pu[2], Pv[0], g.w);
       F.add(Pu[1], Pv[1], g.w, 2.0);
@@ -103,7 +106,7 @@ BezierForms assembleBezierForms(const BezierProblem& p) {
   // The normal and data terms' nodes: exact Gauss for a continuous field (degree
   // 2(n-1) + 2 n1 ≤ 2(n + n1) - 1), the trapezoidal samples for a discrete one.
   const NodeGrid g = f.discrete ? trapezoidNodeGrid(f.np, f.mp) : gaussNodeGrid(n + f.n1, m + f.m1);
-  const std::vector<MatrixXd> Pu = pairTables(n, g.u, 1), Pv = pairTables(m, g.v, 1);
+  const std::vector<MatrixXd> Pu = pairTables(n, g.u, 1, Tu), Pv = pairTables(m, g.v, 1, Tv);
 
   // Data term γ|R - S|² with γ = 1 and the per-sample γ weights.
   {
@@ -111,7 +114,7 @@ BezierForms assembleBezierForms(const BezierProblem& p) {
     if (f.discrete && !f.gammaWeight.empty())
       for (Eigen::Index a = 0; a < w.rows(); ++a)
         for (Eigen::Index b = 0; b < w.cols(); ++b) w(a, b) *= f.gammaWeight[a * w.cols() + b];
-    TensorGram M(n, m);
+    TensorGram M(nb, mb);
     M.add(Pu[0], Pv[0], w);
     out.mass = M.matrix();
   }
@@ -120,7 +123,7 @@ BezierForms assembleBezierForms(const BezierProblem& p) {
   // a_u (a_v) rows being ∂/∂u (∂/∂v) of the basis.
   const std::array<MatrixXd, 3> N = normalsOnGrid(f, g);
   out.normal = MatrixXd::Zero(3 * K, 3 * K);
-  TensorGram block(n, m);
+  TensorGram block(nb, mb);
   MatrixXd w(g.w.rows(), g.w.cols());
   for (int c = 0; c < 3; ++c)
     for (int d = c; d < 3; ++d) {
@@ -128,11 +131,11 @@ BezierForms assembleBezierForms(const BezierProblem& p) {
       block.clear();
       block.add(Pu[1], Pv[0], w);
       block.add(Pu[0], Pv[1], w);
-      for (int k = 0; k <= n; ++k)  // column by column (Eigen is column-major)
-        for (int l = 0; l <= m; ++l)
-          for (int i = 0; i <= n; ++i)
-            for (int j = 0; j <= m; ++j) {
-              const int r = i * (m + 1) + j, s = k * (m + 1) + l;
+      for (int k = 0; k <= nb; ++k)  // column by column (Eigen is column-major)
+        for (int l = 0; l <= mb; ++l)
+          for (int i = 0; i <= nb; ++i)
+            for (int j = 0; j <= mb; ++j) {
+              const int r = i * (mb + 1) + j, s = k * (mb + 1) + l;
               out.normal(3 * r + c, 3 * s + d) = out.normal(3 * r + d, 3 * s + c) = block(i, j, k, l);
             }
     }

@@ -36,8 +36,10 @@ struct BezierForms {
                              // coordinate c of control point k at 3k + c
 };
 
-// K = (n+1)(m+1), control point (i, j) at i*(m+1)+j. Expects a validated problem.
-BezierForms assembleBezierForms(const BezierProblem& p);
+// K = (n+1)(m+1), control point (i, j) at i*(m+1)+j. Expects a validated problem. With Tu
+// (Tv): the forms in the basis Σ_i Tu(i, c) B_i^n(u) (columns c) instead of B^n in u (v), so
+// K = Tu.cols() · Tv.cols() (the solver's well-conditioned fallback, interior_basis.hpp).
+BezierForms assembleBezierForms(const BezierProblem& p, const Eigen::MatrixXd* Tu = nullptr, const Eigen::MatrixXd* Tv = nullptr);
 
 // The node grid size Nu × Nv of the normal and data terms.
 void bezierNormalNodes(int n, int m, const BezierNormalField& f, int& Nu, int& Nv);

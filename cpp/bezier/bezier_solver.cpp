@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "bezier/bezier_assembly.hpp"
+#include "bezier/interior_basis.hpp"
 #include "common/errors.hpp"
 
 namespace pdesurf {
@@ -19,6 +20,13 @@ void addBlockDiagonal(MatrixXd& Q, const MatrixXd& S, double scale) {
   for (int l = 0; l < S.cols(); ++l)
     for (int c = 0; c < 3; ++c)
       for (int k = 0; k < S.rows(); ++k) Q(3 * k + c, 3 * l + c) += scale * S(k, l);
+}
+
+// A singular system shows zero or negative pivots; positive ones are accepted down to 1e-16 of
+// the largest.
+bool pivotsOk(const Eigen::LDLT<MatrixXd>& ldlt) {
+  const VectorXd D = ldlt.vectorD();
+  return ldlt.info() == Eigen::Success && D.minCoeff() > 1e-16 * std::max(1.0, D.maxCoeff());
 }
 
 void requireFinite(const Eigen::Vector3d& p, const std::string& what) {
@@ -93,11 +101,31 @@ BezierSolver::BezierSolver(const BezierProblem& shape) : shape_(shape) {
   for (int b = 0; b < 3 * K; ++b)
     for (int a = 0; a < nf; ++a) Gf_(a, b) = G_(free_[a], b);
   ldlt_.compute(Qff);
-  const VectorXd D = ldlt_.vectorD();
-  // A singular system shows zero or negative pivots. Positive ones are accepted down to 1e-16 of
-  // the largest: Bernstein bases are badly conditioned at high degree (a 16×16 net's smallest
-  // pivot is ~5e-14 of its largest) yet the surface they span is well determined.
-  if (ldlt_.info() != Eigen::Success || !(D.minCoeff() > 1e-16 * std::max(1.0, D.maxCoeff())))
+  // Bernstein bases are badly conditioned at high degree (a 16×16 net's smallest pivot is
+  // ~5e-14 of its largest), yet the surface they span is well determined. Where the pivots
+  // fail (degree 16 membrane with γ ≥ 1e4: the rounded matrix is indefinite), the free block
+  // is assembled again in a well-conditioned basis of the same space (interior_basis.hpp);
+  // only if that fails too is the energy singular (the fairness drowned by λ, say).
+  if (!pivotsOk(ldlt_)) factorInInteriorBasis();
+}
+
+void BezierSolver::factorInInteriorBasis() {
+  const int n = shape_.n, m = shape_.m, r = shape_.energy == BezierEnergy::ThinPlate ? 2 : 1;
+  const MatrixXd Tu = interiorToBernstein(n, r), Tv = interiorToBernstein(m, r);
+  const BezierForms b = assembleBezierForms(shape_, &Tu, &Tv);
+  MatrixXd Qb = shape_.lambda * b.normal;
+  addBlockDiagonal(Qb, b.fairness, 1.0);
+  addBlockDiagonal(Qb, b.mass, shape_.gamma);
+  // x_free = Tfree y: free coordinate (i, j, c) = Σ_kl Tu(i, k) Tv(j, l) y(k, l, c).
+  const int mb = static_cast<int>(Tv.cols()) - 1;
+  Tfree_ = MatrixXd::Zero(free_.size(), Qb.rows());
+  for (size_t a = 0; a < free_.size(); ++a) {
+    const int point = free_[a] / 3, c = free_[a] % 3, i = point / (m + 1), j = point % (m + 1);
+    for (int k = 0; k < Tu.cols(); ++k)
+      for (int l = 0; l <= mb; ++l) Tfree_(a, 3 * (k * (mb + 1) + l) + c) = Tu(i, k) * Tv(j, l);
+  }
+  ldlt_.compute(Qb);
+  if (!pivotsOk(ldlt_))
     throw Error(ErrorCode::Singular, "the energy has no unique minimiser (its matrix is singular to working precision): "
                                      "reduce lambda or gamma, or the degree");
 }
@@ -112,7 +140,8 @@ ControlNet BezierSolver::solve(const ControlNet& initial) const {
   }
   VectorXd xFixed(fixed_.size());
   for (size_t b = 0; b < fixed_.size(); ++b) xFixed(b) = s(fixed_[b]);
-  const VectorXd xFree = ldlt_.solve(Gf_ * s - Qfx_ * xFixed);
+  const VectorXd rhs = Gf_ * s - Qfx_ * xFixed;
+  const VectorXd xFree = Tfree_.size() ? VectorXd(Tfree_ * ldlt_.solve(Tfree_.transpose() * rhs)) : VectorXd(ldlt_.solve(rhs));
   if (!xFree.allFinite()) throw Error(ErrorCode::Singular, "the solve produced non-finite control points");
   ControlNet out = initial;  // fixed rings stay exactly as given
   for (size_t a = 0; a < free_.size(); ++a) out[free_[a] / 3](free_[a] % 3) = xFree(a);

@@ -26,7 +26,8 @@ class BezierSolver {
  public:
   // Throws Error(InvalidField) for a degree too low for the energy, negative λ or γ, a
   // malformed normal field; Error(NonFinite) for non-finite input; Error(Singular) when the
-  // free-free block is not positive definite.
+  // free-free block is not positive definite to working precision, in the Bernstein basis and
+  // in the well-conditioned interior basis (interior_basis.hpp) alike.
   explicit BezierSolver(const BezierProblem& shape);
 
   // The minimiser for this initial surface (its boundary rings are kept bit for bit).
@@ -43,7 +44,10 @@ class BezierSolver {
   Eigen::MatrixXd Q_, G_, normal_;  // 3K×3K
   std::vector<int> free_, fixed_;   // coordinate indices
   Eigen::MatrixXd Qfx_, Gf_;
+  Eigen::MatrixXd Tfree_;  // empty, or the fallback's basis: x_free = Tfree_ y (ldlt_ factors y's matrix)
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+
+  void factorInInteriorBasis();
 };
 
 // One-off: S from the problem.

@@ -1,6 +1,10 @@
 #include "common/errors.hpp"
 
+#include "common/text.hpp"
+
 namespace pdesurf {
+
+Error::Error(ErrorCode code, const std::string& message) : std::runtime_error(clipMiddle(message, kErrorMessageChars)), code_(code) {}
 
 const char* errorCodeName(ErrorCode code) {
   switch (code) {

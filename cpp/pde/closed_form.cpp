@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "basis/general_function.hpp"
 #include "ode/basis_cache.hpp"
 #include "pde/poly_in_v.hpp"
@@ -28,7 +29,7 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
   std::vector<Grouped> out;
   auto refuse = [](const VFunction& g) {
     if (g.isGeneral())
-      throw Error(ErrorCode::InvalidField, "'" + describeFunction(g) + "' has no closed form: use the method auto, modal or pseudo-navier");
+      throw Error(ErrorCode::InvalidField, "'" + clipText(describeFunction(g), 200) + "' has no closed form: use the method auto, modal or pseudo-navier");
   };
   for (const VExpansion& e : p.left)
     for (const VTerm& t : e) refuse(t.g);
@@ -36,7 +37,7 @@ std::vector<Grouped> groupEigenTerms(const ComponentProblem& p, int n) {
     for (const VTerm& t : e) refuse(t.g);
   for (const ForceTerm& f : p.force) refuse(f.g);
   if (!p.generalForce.empty())
-    throw Error(ErrorCode::InvalidField, "the force '" + p.generalForce.front().text + "' has no closed form: use the method auto, modal or pseudo-navier");
+    throw Error(ErrorCode::InvalidField, "the force '" + clipText(p.generalForce.front().text, 200) + "' has no closed form: use the method auto, modal or pseudo-navier");
   auto slot = [&](const VFunction& g) -> Grouped& {
     auto it = std::find_if(out.begin(), out.end(), [&](const Grouped& gr) { return gr.g == g; });
     if (it != out.end()) return *it;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "pde/pde_problem.hpp"
 #include "basis/general_function.hpp"
 #include "scene/expression.hpp"
@@ -39,15 +40,18 @@ inline const json& require(const json& obj, const char* key, const std::string& 
   return *it;
 }
 
-// One line of text: control characters are refused (a newline in a name would start a new
-// line in an OBJ file); multiLine allows newlines and tabs (descriptions, notes).
+// One line of text: control characters are refused, C1 (NEL U+0085) and U+2028, U+2029
+// included (common/text.hpp: a reader that splits lines there would see a name in an OBJ file
+// start a line of its own); multiLine allows newlines and tabs (descriptions, notes). Over
+// maxLen is a size limit: TooLarge.
 inline std::string stringField(const json& j, const std::string& path, size_t maxLen = 200, bool multiLine = false) {
   if (!j.is_string()) fail(ErrorCode::InvalidField, path, "expected a string");
   const std::string s = j.get<std::string>();
-  if (s.size() > maxLen) fail(ErrorCode::InvalidField, path, "longer than " + std::to_string(maxLen) + " characters");
-  for (unsigned char c : s)
-    if ((c < 0x20 || c == 0x7f) && !(multiLine && (c == '\n' || c == '\t')))
-      fail(ErrorCode::InvalidField, path, multiLine ? "control characters other than newline and tab" : "a control character (names and titles are one line)");
+  if (s.size() > maxLen) fail(ErrorCode::TooLarge, path, "longer than " + std::to_string(maxLen) + " characters");
+  for (size_t i = 0; i < s.size(); ++i)
+    if (controlCharacterAt(s, i) && !(multiLine && (s[i] == '\n' || s[i] == '\t')))
+      fail(ErrorCode::InvalidField, path,
+           "a control character " + codePointName(s, i) + (multiLine ? " (only newline and tab are allowed)" : " (names and titles are one line)"));
   return s;
 }
 
@@ -77,6 +81,8 @@ class Resolver {
     if (j.is_number()) {
       v = j.get<double>();
     } else if (j.is_string()) {
+      if (j.get_ref<const std::string&>().size() > kMaxExpressionLength)  // a size limit, before the parser sees it
+        fail(ErrorCode::TooLarge, path, "longer than " + std::to_string(kMaxExpressionLength) + " characters");
       try {
         v = evaluateExpression(j.get<std::string>(), values);
       } catch (const Error& e) {

@@ -69,6 +69,9 @@ struct Meets {
   int end = 0;          // 0: u (or v) = 0, 1: u (or v) = 1
   bool alongU = false;  // Bézier only: the border v = end, running along u
   bool atT1 = false;    // the primary's edge: false t = t0, true t = t1
+  // Scene version 3, an end along a curve t = tau(v): the trimmed surface starts at the curve
+  // (atT1 false); replacesT1 says which border the curve replaces (for the certificate's label).
+  bool curve = false, replacesT1 = false;
   // The primary's v-interval that the patch's border parameter maps onto linearly; unset
   // (NaN): a PDE blend shares v with the primary, a Bézier border maps [0, 1] onto v_range.
   double v0 = NAN, v1 = NAN;

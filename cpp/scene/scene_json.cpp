@@ -1,7 +1,9 @@
 // JSON -> Scene. Every error names its field path; unknown fields are rejected because they
 // are nearly always typos that would otherwise be silently ignored.
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "bezier/bezier_solver.hpp"
 #include "scene/derived_ends.hpp"
@@ -80,6 +82,25 @@ void parseMeets(const json& j, const std::string& path, const Resolver& r, Patch
     const std::string at = stringField(j["meets"]["at"], mp + ".at");
     if (at != "t0" && at != "t1") fail(ErrorCode::InvalidField, mp + ".at", "expected \"t0\" or \"t1\"");
     meets.atT1 = at == "t1";
+  }
+}
+
+// The primary's v-interval a join covers (meets.v_range, else a PDE blend's own v_range, else
+// the primary's) must lie inside the primary's v_range: outside it the primary's expressions
+// are evaluated where the surface is not drawn, so the certificate would pass a border that
+// hangs free. A part of the border (seed 002 Fig. 4's middle third) is allowed.
+void checkJoinInterval(const Patch& primary, const Meets& m, const Patch& target, const std::string& mp) {
+  const PrimarySurface& S = primary.primary;
+  const bool given = !std::isnan(m.v0);
+  if (!given && target.kind != PatchKind::Pde) return;
+  const double a = given ? m.v0 : target.pde.v0, b = given ? m.v1 : target.pde.v1;
+  const double slack = 1e-12 * std::max({1.0, std::abs(S.v0), std::abs(S.v1)});
+  if (a < S.v0 - slack || b > S.v1 + slack) {
+    const auto num = [](double x) { std::ostringstream o; o << x; return o.str(); };
+    const std::string what = given ? "[" : "the v_range [";
+    fail(ErrorCode::InvalidField, given ? mp + ".v_range" : mp,
+         what + num(a) + ", " + num(b) + "]" + (given ? "" : " of pde patch '" + target.name + "'") + " is not inside the v_range [" + num(S.v0) +
+             ", " + num(S.v1) + "] of '" + primary.name + "': the join would hang past the surface's border");
   }
 }
 
@@ -232,6 +253,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
         fail(ErrorCode::UnknownName, mp + ".patch", "no pde or bezier patch named '" + m.patch + "'");
       if (m.alongU && target->kind != PatchKind::Bezier)
         fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");
+      checkJoinInterval(scene.patches[i], m, *target, mp);
     }
   return scene;
 }

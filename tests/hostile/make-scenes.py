@@ -43,6 +43,15 @@ def many_patches(d):
     base = d['patches'][0]
     d['patches'] = [dict(copy.deepcopy(base), name=f'blend{k}') for k in range(64)]
 
+fig4 = load('examples/wu2015-fig4.json')
+BIG_EXPRESSION = '+'.join(['v'] * 11000)  # 22 KB
+
+def set_label(d, text):
+    next(iter(d['parameters'].values()))['label'] = text
+
+def fig4_range_past_border(d):
+    d['patches'][1]['meets']['v_range'] = [0.5, 2.5]
+
 def hex_number(d):
     d['patches'][0]['boundary']['z']['u0'] = ['0x10']
 
@@ -66,6 +75,20 @@ cases = [
      '0x10 was read as 16 by strtod, undocumented'),
     ('duplicate-key', json.dumps(vase).replace('"version": 2', '"version": 2, "version": 2'), 16, 'ParseError', 'twice',
      'the last of two equal keys won silently'),
+    ('nel-in-title', with_(vase, lambda d: d.__setitem__('title', 'a\u0085v 1 2 3')), 16, 'InvalidField', 'title: a control character U+0085',
+     'NEL (U+0085) is a line break to some OBJ readers: the title is the OBJ comment line'),
+    ('line-separator-in-patch-name', with_(vase, lambda d: d['patches'][0].__setitem__('name', 'x\u2028v 1 2 3\u2028o y')), 16, 'InvalidField', 'U+2028',
+     'U+2028 splits lines for some readers: the name is an OBJ "o" line'),
+    ('paragraph-separator-in-label', with_(vase, lambda d: set_label(d, 'r\u2029v 1 2 3')), 16, 'InvalidField', 'U+2029',
+     'U+2029 in a parameter label (one line)'),
+    ('c1-csi-in-patch-name', with_(vase, lambda d: d['patches'][0].__setitem__('name', 'x\u009b31m')), 16, 'InvalidField', 'U+009B',
+     'a C1 control (CSI) in a patch name'),
+    ('expression-22kb', with_(vase, lambda d: d['patches'][0]['boundary']['x']['u0'].__setitem__(0, BIG_EXPRESSION)), 16, 'TooLarge',
+     'longer than 1000 characters', 'a 22 KB expression: a size limit, named in a short message'),
+    ('expression-22kb-in-number', with_(vase, lambda d: d['patches'][0]['v_range'].__setitem__(1, BIG_EXPRESSION)), 16, 'TooLarge',
+     'longer than 1000 characters', 'a 22 KB expression where a number goes (was ParseError from the parser)'),
+    ('bezier-join-past-border', with_(fig4, fig4_range_past_border), 16, 'InvalidField', 'is not inside the v_range [-1.5, 1.5]',
+     "a Bezier border mapped onto v in [0.5, 2.5] of a strip drawn over [-1.5, 1.5]: was certified as a passing join"),
     ('deep-1000', '{"format": ' + '[' * 1000 + ']' * 1000 + '}', 16, 'TooLarge', 'nested deeper',
      '1,000 nested arrays'),
 ]

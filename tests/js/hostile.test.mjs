@@ -75,9 +75,12 @@ describe('hostile corpus', () => {
       assert.equal(r.status, 1, `exit ${r.status}: ${r.stderr}`);
       assert.match(r.stderr, new RegExp(`: ${s.code}: `), r.stderr);
       assert.ok(r.stderr.includes(s.message), r.stderr);
+      // Every error message is at most 600 characters (docs/limits.md), user text clipped.
+      const line = r.stderr.trim().split(`: ${s.code}: `).slice(1).join(`: ${s.code}: `);
+      assert.ok(Buffer.byteLength(line) <= 600, `${Buffer.byteLength(line)} bytes`);
       assert.throws(
         () => solver.solve(fs.readFileSync(file, 'utf8'), { nu: s.grid, nv: s.grid }),
-        (err) => err instanceof PdesurfError && err.code === s.code && err.message.includes(s.message),
+        (err) => err instanceof PdesurfError && err.code === s.code && err.message.includes(s.message) && err.message.length <= 600,
       );
     });
   }

@@ -66,8 +66,9 @@ export function disposeCopy(copy) {
   for (const m of materials) m.dispose();
 }
 
-// OBJ's "o" line runs to the end of the line and most readers split it at blanks.
-const objName = (name) => String(name).replace(/\s+/g, '_') || 'patch';
+// OBJ's "o" line runs to the end of the line and most readers split it at blanks. Control
+// characters go too: C0, DEL and C1 (NEL U+0085 is a line break to some readers, and not in \s).
+const objName = (name) => String(name).replace(/[\s\u0000-\u001f\u007f-\u009f]+/g, '_') || 'patch';
 
 /** The patches as OBJ text: one "o" per patch, v / vt / vn / f, no materials. */
 export async function exportObj(surfaces) {
