@@ -169,4 +169,12 @@ TEST_CASE("v3 rules: a kink of abs() in tau is accepted (sign(0) = 0: the mean o
     }
   }
   CHECK(evaluate(*derivative(parseExpression("abs(v - 1)", {}, AllowedVariables{true, false}), ExprVar::V), std::array<double, 2>{1.0, 0.0}.data()) == 0.0);
+  // And the joins keep their promise: the general method meets the kinked data exactly.
+  const SceneReport r = checkScene(scene, solved, 0);
+  CHECK(!r.joins.empty());
+  for (const JoinResult& j : r.joins) {
+    CAPTURE(j.g0);
+    CAPTURE(j.g1Deg);
+    CHECK(j.ok);
+  }
 }
