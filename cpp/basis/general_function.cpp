@@ -1,19 +1,20 @@
 #include "basis/general_function.hpp"
 
 #include "common/errors.hpp"
+#include "expr/budget.hpp"
 
 namespace pdesurf {
 
 namespace {
-constexpr size_t kMaxDerivativeNodes = 200000;  // a bound on symbolic swell
+constexpr size_t kMaxDerivativeNodes = 200000;  // nodes built per derivative: a bound on symbolic swell
 }
 
 double GeneralFunction::eval(double v, int k) const {
   while (static_cast<int>(derivs_.size()) <= k) {
-    Expr next = derivative(derivs_.back(), ExprVar::V);
-    if (nodeCount(next) > kMaxDerivativeNodes)
-      throw Error(ErrorCode::InvalidField, "'" + text_ + "' is too complex to differentiate " + std::to_string(k) + " times");
-    derivs_.push_back(std::move(next));
+    const std::string what = "'" + (text_.size() > 200 ? text_.substr(0, 200) + "\xE2\x80\xA6" : text_) + "': its derivative of order " +
+                             std::to_string(derivs_.size()) + " would";
+    ExprBudget budget(kMaxDerivativeNodes, what);  // stops the build at the first node over it
+    derivs_.push_back(derivative(derivs_.back(), ExprVar::V));
   }
   const double vars[2] = {v, 0.0};
   return evaluate(*derivs_[k], vars);

@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "common/limits.hpp"
+#include "expr/budget.hpp"
+#include "expr/program.hpp"
 #include "scene/expression_fields.hpp"
 
 namespace pdesurf {
@@ -25,9 +27,22 @@ std::string num(double x) {
 
 [[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
-Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
-  const double vars[2] = {v, 0.0};
-  return {evaluate(*e[0], vars), evaluate(*e[1], vars), evaluate(*e[2], vars)};
+// Values of expressions in v at the kSamples points of [v0, v1]: one flat program, each
+// distinct node evaluated once over all samples. values[r][k] for root r at sample k.
+struct Sampled {
+  std::vector<double> v;
+  std::vector<std::vector<double>> values;
+  Eigen::Vector3d at3(size_t r, int k) const { return {values[r][k], values[r + 1][k], values[r + 2][k]}; }
+};
+
+Sampled sample(const std::vector<Expr>& roots, double v0, double v1) {
+  Sampled s;
+  for (int k = 0; k < kSamples; ++k) s.v.push_back(v0 + (v1 - v0) * k / (kSamples - 1));
+  s.values.assign(roots.size(), std::vector<double>(kSamples));
+  std::vector<double*> outs;
+  for (auto& r : s.values) outs.push_back(r.data());
+  ExprProgram(roots).runAll(s.v.data(), nullptr, kSamples, outs.data());
+  return s;
 }
 
 Vec3Expr map3(const Vec3Expr& e, Expr (*f)(const Expr&, ExprVar)) {
@@ -62,9 +77,12 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
     fail(ErrorCode::InvalidField, ref.path + ".surface", "'" + ref.surface + "' is already trimmed along a curve by another end");
   const PrimarySurface& S = s.primary;
   d.tau = ref.curve ? ref.tau : constant(ref.atT1 ? S.t1 : S.t0);
+  // Built under the scene's budget (deriveEnds); S_tt only where curvature is asked.
+  const bool curvature = ref.continuity == Continuity::Curvature;
+  const Vec3Expr St = map3(S.full, derivative);
   d.P = onTrimline(S.full, d.tau);
-  d.T = onTrimline(map3(S.full, derivative), d.tau);
-  d.C = onTrimline(map3(map3(S.full, derivative), derivative), d.tau);
+  d.T = onTrimline(St, d.tau);
+  if (curvature) d.C = onTrimline(map3(St, derivative), d.tau);
 
   // The checks, along the blend's v-range.
   const double bv0 = blend.pde.v0, bv1 = blend.pde.v1;
@@ -74,27 +92,30 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
          "the blend's v_range [" + num(bv0) + ", " + num(bv1) + "] is not inside the v_range [" + num(S.v0) + ", " + num(S.v1) + "] of '" + ref.surface + "'");
   const Vec3Expr dP = dv(d.P);
   const double ttol = 1e-9 * std::max(1.0, std::abs(S.t1 - S.t0));
+  // Roots: tau 0, power 1, P 2-4, S_t 5-7, dP/dv 8-10, S_tt 11-13 (curvature only).
+  std::vector<Expr> roots{d.tau, ref.power, d.P[0], d.P[1], d.P[2], d.T[0], d.T[1], d.T[2], dP[0], dP[1], dP[2]};
+  if (curvature) roots.insert(roots.end(), d.C.begin(), d.C.end());
+  const Sampled at = sample(roots, bv0, bv1);
   std::vector<Eigen::Vector3d> Ts, alongs;  // S_t and the trimline's tangent at each sample
   double maxT = 0.0;
   for (int k = 0; k < kSamples; ++k) {
-    const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
-    const double vars[2] = {v, 0.0};
-    const double t = evaluate(*d.tau, vars);
+    const double v = at.v[k];
+    const double t = at.values[0][k];
     if (!std::isfinite(t)) fail(ErrorCode::NonFinite, ref.path + ".at", "the trimline is not finite at v = " + num(v));
     if (t < std::min(S.t0, S.t1) - ttol || t > std::max(S.t0, S.t1) + ttol)
       fail(ErrorCode::InvalidField, ref.path + ".at",
            "the trimline t = " + num(t) + " at v = " + num(v) + " is outside the t_range [" + num(S.t0) + ", " + num(S.t1) + "] of '" + ref.surface + "'");
-    const Eigen::Vector3d P = eval3(d.P, v), T = eval3(d.T, v), C = eval3(d.C, v);
-    if (!P.allFinite() || !std::isfinite(T.norm()) || (ref.continuity == Continuity::Curvature && !C.allFinite()))
+    const Eigen::Vector3d P = at.at3(2, k), T = at.at3(5, k);
+    if (!P.allFinite() || !std::isfinite(T.norm()) || (curvature && !at.at3(11, k).allFinite()))
       fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + num(v));
-    const double p = evaluate(*ref.power, vars);
+    const double p = at.values[1][k];
     if (!std::isfinite(p)) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + num(v));
     Ts.push_back(T);
-    alongs.push_back(eval3(dP, v));
+    alongs.push_back(at.at3(8, k));
     maxT = std::max(maxT, T.norm());
   }
   for (int k = 0; k < kSamples; ++k) {
-    const double v = bv0 + (bv1 - bv0) * k / (kSamples - 1);
+    const double v = at.v[k];
     const Eigen::Vector3d& T = Ts[k];
     const Eigen::Vector3d& along = alongs[k];
     if (!(T.norm() > 1e-9 * maxT))
@@ -111,16 +132,18 @@ DerivedEnd resolve(Scene& scene, const Patch& blend, const EndReference& ref) {
 
 // Mean distance between the two ends' curves over the blend's v-range.
 double meanGap(const std::array<Vec3Expr, 2>& pos, double v0, double v1) {
+  const Sampled at = sample({pos[0][0], pos[0][1], pos[0][2], pos[1][0], pos[1][1], pos[1][2]}, v0, v1);
   double sum = 0.0;
   for (int k = 0; k < kSamples; ++k) {
-    const double v = v0 + (v1 - v0) * k / (kSamples - 1);
-    const double g = (eval3(pos[1], v) - eval3(pos[0], v)).norm();
+    const double g = (at.at3(3, k) - at.at3(0, k)).norm();
     if (std::isfinite(g)) sum += g;
   }
   return sum / kSamples;
 }
 
 // The surface met along a curve is drawn from its trimline: t = tau + s (t_far - tau), s in [0, 1].
+// Its pointwise expression and the partial derivatives drawing needs are built here, under the
+// scene's budget, so tessellation never differentiates an unbounded graph.
 void trim(Patch& surface, const EndReference& ref) {
   PrimarySurface& S = surface.primary;
   const Expr tFar = constant(ref.atT1 ? S.t0 : S.t1);
@@ -128,6 +151,7 @@ void trim(Patch& surface, const EndReference& ref) {
   for (int c = 0; c < 3; ++c) {
     S.terms[c].clear();
     S.pointwise[c] = substitute(S.full[c], ExprVar::U, t);
+    S.pointwisePartials[c] = partialDerivatives(S.pointwise[c], true);
   }
   S.t0 = 0.0;
   S.t1 = 1.0;
@@ -152,12 +176,16 @@ void recordJoin(const DerivedEnd& d, const Patch& blend, const EndReference& ref
 }  // namespace
 
 void deriveEnds(Scene& scene) {
+  // One budget for the whole scene: every node built for any end (and for the surfaces they
+  // trim) counts, and the first node over the limit stops the derivation.
+  ExprBudget budget(limits::kDerivedNodes, "the derived conditions of the scene's ends and the surfaces they trim");
   for (Patch& blend : scene.patches) {
     if (blend.kind != PatchKind::Pde || !(blend.ends[0].given || blend.ends[1].given)) continue;
     std::array<DerivedEnd, 2> derived;
     std::array<Vec3Expr, 2> pos;
     for (int end = 0; end < 2; ++end) {
       if (blend.ends[end].given) {
+        budget.setPath(blend.ends[end].path);
         derived[end] = resolve(scene, blend, blend.ends[end]);
         pos[end] = derived[end].P;
       } else {
@@ -168,6 +196,7 @@ void deriveEnds(Scene& scene) {
     for (int end = 0; end < 2; ++end) {
       EndReference& ref = blend.ends[end];
       if (!ref.given) continue;
+      budget.setPath(ref.path);
       const DerivedEnd& d = derived[end];
       // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
       // ends touch); "surface": power 1 continues the surface's t at its own speed.
@@ -186,17 +215,17 @@ void deriveEnds(Scene& scene) {
         if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.C[c])) : constant(0.0);
         ref.derived[c].clear();
         for (int i = 0; i < n; ++i) {
-          if (nodeCount(e[i]) > limits::kDerivedNodes)
-            fail(ErrorCode::TooLarge, ref.path, std::string("the derived condition of ") + "xyz"[c] + " has more than " +
-                                                   std::to_string(limits::kDerivedNodes) + " nodes: simplify the surface's expression");
-          ref.derived[c].push_back(toText(e[i]));
+          ref.derived[c].push_back(toTextLimited(e[i], limits::kDerivedTextChars));
           slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
         }
       }
       recordJoin(d, blend, ref, end);
     }
     for (int end = 0; end < 2; ++end)
-      if (blend.ends[end].given && blend.ends[end].curve) trim(*derived[end].surface, blend.ends[end]);
+      if (blend.ends[end].given && blend.ends[end].curve) {
+        budget.setPath(blend.ends[end].path);
+        trim(*derived[end].surface, blend.ends[end]);
+      }
   }
 }
 
