@@ -286,7 +286,7 @@ Split splitExpression(const Expr& e, bool secondPolynomialOnly) {
   Sum sum;
   try {
     work = 0;
-    if (e->depth > kMaxDepth) throw GiveUp{};
+    if (e->depth > kMaxDepth || e->treeSize > kMaxWork) throw GiveUp{};  // the walk alone would pass the cap
     sum = toSum(e);
   } catch (const GiveUp&) {
     sum = opaque(e);
