@@ -11,6 +11,8 @@
 #include "expr/budget.hpp"
 #include "expr/parse.hpp"
 #include "expr/program.hpp"
+#include "scene/scene.hpp"
+#include "test_util.hpp"
 
 using namespace pdesurf;
 
@@ -125,4 +127,22 @@ TEST_CASE("expression graph: the flat program agrees with evaluate()") {
       else CHECK(out[r][i] == want);  // the same operations in the same order: bit for bit
     }
   CHECK(prog.registers() < prog.instructions());  // registers are reused
+}
+
+TEST_CASE("expression graph: one budget per scene, summed over its blends, stops at the first end over it") {
+  const std::string dir = pdesurf::testing::examplePath("../tests/hostile/expressions/");
+  // One 450-factor surface met along a curve with curvature: derived (about 25 000 nodes).
+  const Scene one = parseScene(pdesurf::testing::readText(dir + "product-450-curve.json"));
+  CHECK(one.patches[2].primary.trimmed);
+  CHECK(one.patches[2].primary.pointwisePartials[2].size() == 6);
+  // 31 of them in one scene: refused at the 8th blend, in a fraction of a second.
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    parseScene(pdesurf::testing::readText(dir + "31-surfaces-on-curves.json"));
+    FAIL("no TooLarge");
+  } catch (const Error& e) {
+    CHECK(e.code() == ErrorCode::TooLarge);
+    CHECK(std::string(e.what()).find("patches[14].ends.u1: ") != std::string::npos);
+  }
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 2.0);
 }
