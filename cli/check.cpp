@@ -5,12 +5,26 @@
 
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
+#include "methods/measures.hpp"
 
 namespace pdesurf::cli {
 
 namespace {
 
-nlohmann::json toJson(const SceneReport& r) {
+// The interior's PDE residual of every pde patch, beside the joins (which are exact by method).
+struct PatchResidual {
+  std::string patch, method;
+  PdeResidual r;
+};
+
+std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
+  std::vector<PatchResidual> out;
+  for (const SolvedPatch& s : solved)
+    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.patch->pde, s.surface)});
+  return out;
+}
+
+nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res) {
   using nlohmann::json;
   json joins = json::array(), crossings = json::array();
   for (const JoinResult& j : r.joins)
@@ -20,7 +34,11 @@ nlohmann::json toJson(const SceneReport& r) {
   for (const Crossing& c : r.crossings)
     crossings.push_back({{"patch", c.patch}, {"other", c.other}, {"u", c.u}, {"v", c.v}, {"other_u", c.otherU}, {"other_v", c.otherV},
                          {"triangles", c.triangles}});
-  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"crossings", crossings}};
+  json interior = json::array();
+  for (const PatchResidual& p : res)
+    interior.push_back({{"patch", p.patch}, {"method", p.method}, {"residual", p.r.absolute}, {"residual_rel", p.r.relative},
+                        {"worst_u", p.r.u}, {"worst_v", p.r.v}});
+  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"crossings", crossings}, {"interior", interior}};
 }
 
 }  // namespace
@@ -31,8 +49,9 @@ int runCheck(const Options& o, std::ostream& out) {
   checkSceneGrid(scene, grid, grid);
   const auto solved = solveScene(scene);
   const SceneReport r = checkScene(scene, solved, grid);
+  const std::vector<PatchResidual> res = residuals(solved);
   if (o.json) {
-    out << toJson(r).dump(2) << "\n";
+    out << toJson(r, res).dump(2) << "\n";
     return r.ok ? 0 : 1;
   }
   char line[512];
@@ -42,6 +61,11 @@ int runCheck(const Options& o, std::ostream& out) {
     std::snprintf(line, sizeof line, "join %s:%s - %s:%s  promise %s  G0 %.2e  G1 %.2e deg  G2 %s  fold %s  degenerate %d  %s\n",
                   j.patch.c_str(), j.end.c_str(), j.surface.c_str(), j.edge.c_str(), levelName(j.level), j.g0, j.g1Deg, g2,
                   j.fold ? "YES" : "no", j.degenerate, j.ok ? "ok" : "FAILS");
+    out << line;
+  }
+  for (const PatchResidual& p : res) {
+    std::snprintf(line, sizeof line, "interior %s (%s): PDE residual %.2e, relative %.2e at (u, v) = (%.3g, %.3g)\n", p.patch.c_str(),
+                  p.method.c_str(), p.r.absolute, p.r.relative, p.r.u, p.r.v);
     out << line;
   }
   for (const Crossing& c : r.crossings) {

@@ -2,6 +2,7 @@
 
 #include "common/errors.hpp"
 #include "expr/budget.hpp"
+#include "expr/taylor.hpp"
 
 namespace pdesurf {
 
@@ -10,13 +11,16 @@ constexpr size_t kMaxDerivativeNodes = 200000;  // nodes built per derivative: a
 }
 
 double GeneralFunction::eval(double v, int k) const {
+  const double vars[2] = {v, 0.0};
+  // Past the second derivative (normals and curvature need no more) Taylor arithmetic: its
+  // cost grows with k², where each symbolic order multiplies the expression.
+  if (k > 2) return derivativeAt(*derivs_.front(), ExprVar::V, vars, k);
   while (static_cast<int>(derivs_.size()) <= k) {
     const std::string what = "'" + (text_.size() > 200 ? text_.substr(0, 200) + "\xE2\x80\xA6" : text_) + "': its derivative of order " +
                              std::to_string(derivs_.size()) + " would";
     ExprBudget budget(kMaxDerivativeNodes, what);  // stops the build at the first node over it
     derivs_.push_back(derivative(derivs_.back(), ExprVar::V));
   }
-  const double vars[2] = {v, 0.0};
   return evaluate(*derivs_[k], vars);
 }
 

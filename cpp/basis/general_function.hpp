@@ -1,6 +1,7 @@
 // A boundary function of v outside the closed-form families, typed as an expression
-// ("sqrt((r+k1)^2 - s^2*cos(v)^2)"). Its v-derivatives are formed symbolically on demand (the
-// general methods need up to the operator's order) and cached.
+// ("sqrt((r+k1)^2 - s^2*cos(v)^2)"). Its first two v-derivatives (normals, curvature) are
+// formed symbolically on demand and cached; higher ones (the general methods' residuals and
+// end matching) come from Taylor arithmetic at the point (expr/taylor.hpp).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,5 +1,6 @@
 #include "methods/approximate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -28,7 +29,7 @@ void requireFinite(const VExpansion& f, double v) {
 
 }  // namespace
 
-VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N) {
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor) {
   const double L = v1 - v0, omega = 2 * M_PI / L;
   const int K = std::max(1024, 16 * N);
   std::vector<double> samples(K + 1);
@@ -48,11 +49,16 @@ VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N) {
       zk *= z;
     }
   }
+  // Modes at the rounding level of the sums are noise, and the k-th mode's noise enters the
+  // surface's v-derivatives (normals, curvature, the PDE's ∂v^2n) times (kω)^j: leave them out.
+  double largest = std::abs(a[0]);
+  for (int k = 1; k <= N; ++k) largest = std::max(largest, 2.0 * std::max(std::abs(a[k]), std::abs(b[k])));
+  const double noise = std::max(1e-15 * largest, 2.0 * noiseFloor * K);  // a, b are K times the coefficients
   VExpansion out;
   out.push_back({VFunction{Family::Poly, 1.0, 0}, a[0] / K});
   for (int k = 1; k <= N; ++k) {
-    out.push_back({VFunction{Family::Cos, k * omega, 0}, 2.0 * a[k] / K});
-    out.push_back({VFunction{Family::Sin, k * omega, 0}, 2.0 * b[k] / K});
+    if (std::abs(2.0 * a[k]) > noise) out.push_back({VFunction{Family::Cos, k * omega, 0}, 2.0 * a[k] / K});
+    if (std::abs(2.0 * b[k]) > noise) out.push_back({VFunction{Family::Sin, k * omega, 0}, 2.0 * b[k] / K});
   }
   return out;
 }

@@ -5,13 +5,17 @@
 //   pseudo-navier     seed 000 Eqs. 9-15: Hermite polynomial in u times each general function,
 //                     plus u^{n-1}(u-1)^n Σ A_mn sin(mu) sin(nv) fitted to the PDE residual
 //                     at collocation points; options ":M,N,L" (default 3,3,49)
-//   modal:N           general functions replaced by N Fourier modes (periodic data) or a
-//                     degree-N Chebyshev interpolant (open data), then solved exactly
+//   modal:N           general functions replaced by N Fourier modes (periodic data), or (open
+//                     data) a degree-N Chebyshev interpolant (N <= 20) or N Fourier modes
+//                     after a Hermite end match (N > 20), then solved exactly; the boundary
+//                     data are then imposed exactly (a Hermite lift in u)
 //   fourier:N         Bloor-Wilson: every boundary function as an N-term Fourier series
 //   pseudo-spectral:N fourier:N plus Bloor-Wilson's remainder meeting the boundary conditions
 //   reference         modal with N raised until the surface stops changing (1e-12)
 //   auto              closed if possible, else modal with N raised until the change is below
 //                     1e-9 (cheaper than reference, far below what a screen shows)
+// Every method auto picks meets the boundary data exactly (to rounding): a blend is judged at
+// its joins. The interior's accuracy is the PDE residual (interiorResidual, methods/measures.hpp).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,13 +1,18 @@
 // pdesurf's converging method: each general boundary function is replaced by N of its Fourier
-// modes (when it is periodic on the v-range) or by its Chebyshev interpolant of degree
-// min(N, 20) (when not), and the whole problem is then solved exactly. Family terms are
-// untouched. The error falls with N like the approximation of the boundary data:
-// geometrically for smooth periodic data; for open data down to ~1e-7 (see kMaxOpenDegree).
+// modes (periodic data), or, on an open v-range, by its Chebyshev interpolant of degree N
+// (N <= 20) or N Fourier modes of what is left after a Hermite polynomial matching its ends is
+// taken off (N > 20, methods/end_matched_fourier.cpp); the whole problem is then solved
+// exactly. Family terms are untouched. The boundary data are then imposed exactly
+// (methods/boundary_lift.hpp), so N decides the interior only, measured by the PDE residual
+// (interiorResidual, methods/measures.hpp): geometric convergence for smooth periodic data, for open data
+// geometric up to degree 20 and then algebraic (like N^-(m+1)).
+#include <algorithm>
 #include <cmath>
 
 #include "basis/general_function.hpp"
 #include "common/errors.hpp"
 #include "methods/approximate.hpp"
+#include "methods/boundary_lift.hpp"
 #include "methods/method.hpp"
 #include "pde/closed_form.hpp"
 #include "surface/mesh.hpp"
@@ -16,25 +21,39 @@ namespace pdesurf {
 
 namespace {
 
-// Past degree ~20 the polynomial solution diverges: the triangular system multiplies the
-// interpolant's tiny high-degree coefficients by factors that grow like factorials, faster
-// than they shrink (measured on seed 000 Eq. 17: E = 4e-7 at 20, 8e-4 at 24; the same with
-// long double, so it is the map, not rounding).
+// Open data up to this N: the Chebyshev interpolant of degree N, in scaled powers of v. Past
+// degree ~20 the closed form cannot take it (the triangular system multiplies the tiny
+// high-degree coefficients by factors that grow like factorials, faster than they shrink:
+// seed 000 Eq. 17 gives E = 4e-7 at 20, 8e-4 at 24), so past it, N Fourier modes after an end
+// match. A polynomial continues the data past the v-range analytically, as the closed form
+// does its families (on an open range the PDE has no conditions at the v ends, so the
+// continuation decides the interior); the end-matched series continues them periodically,
+// stably for any smooth data. Derivatives matched at the ends: 2n + 2 for order 2n, so the
+// lift's residual, which takes 2n v-derivatives of the approximation error, still falls like
+// N^-3; at most 8 (a Hermite polynomial of degree 17, well conditioned in scaled powers).
 constexpr int kMaxOpenDegree = 20;
+int endMatchOrder(const ComponentProblem& c) { return std::min(2 * static_cast<int>(c.alpha.size()), 8); }
 
 PdeProblem modalProblem(const PdeProblem& p, int N) {
-  PdeProblem q = mapSlots(p, [&](const VExpansion& slot) {
-    VExpansion out = familyPart(slot);
-    const VExpansion gen = generalPart(slot);
-    if (gen.empty()) return out;
-    const VExpansion approx = isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N)
-                                                          : chebyshevInterpolant(gen, p.v0, p.v1, std::min(N, kMaxOpenDegree));
-    out.insert(out.end(), approx.begin(), approx.end());
-    return out;
-  });
+  PdeProblem q = p;
   static const char* axis[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     auto& c = q.component[k];
+    const int m = endMatchOrder(c);
+    try {
+      for (auto* side : {&c.left, &c.right})
+        for (VExpansion& slot : *side) {
+          const VExpansion gen = generalPart(slot);
+          if (gen.empty()) continue;
+          slot = familyPart(slot);
+          const VExpansion approx = isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N)
+                                    : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)
+                                                                : endMatchedFourier(gen, p.v0, p.v1, N, m);
+          slot.insert(slot.end(), approx.begin(), approx.end());
+        }
+    } catch (const Error& e) {
+      throw Error(e.code(), std::string("component ") + axis[k] + ": " + e.what());
+    }
     for (const GeneralForce& f : c.generalForce) {
       try {
         const auto terms = approximateForce(f, p.v0, p.v1, N);
@@ -79,11 +98,48 @@ bool allPeriodic(const PdeProblem& p) {
   return true;
 }
 
+// Solves at each N of `steps` until one changes the surface by less than the tolerance. The
+// change is not monotone (a mode that happens to be small, rounding), so one step that does
+// not improve does not end the search: two in a row do, or the last step, keeping the step
+// whose change was smallest.
+void refine(const PdeProblem& p, const std::vector<int>& steps, double tolerance, BasisCache* cache, MethodSolution* out) {
+  constexpr int kPatience = 2;
+  SeparableSurface prev = solveModal(p, steps[0], cache);
+  double best = INFINITY;
+  int worse = 0;
+  out->referenceChange = INFINITY;
+  for (size_t k = 1; k < steps.size(); ++k) {
+    SeparableSurface cur = solveModal(p, steps[k], cache);
+    const double c = change(prev, cur);
+    if (c < best) {
+      best = c;
+      out->surface = cur;
+      out->referenceTerms = steps[k];
+      out->referenceChange = c;
+      worse = 0;
+      if (c < tolerance) return;
+    } else if (++worse >= kPatience) {
+      return;
+    }
+    prev = std::move(cur);
+  }
+}
+
+bool hasGeneralSlots(const PdeProblem& p) {
+  for (const auto& c : p.component)
+    for (const auto* side : {&c.left, &c.right})
+      for (const VExpansion& slot : *side)
+        if (!generalPart(slot).empty()) return true;
+  return false;
+}
+
 }  // namespace
 
 SeparableSurface solveModal(const PdeProblem& p, int N, BasisCache* cache) {
   if (N < 1 || N > 2048) throw Error(ErrorCode::InvalidField, "modal needs 1 <= N <= 2048 terms");
-  return solveClosedForm(modalProblem(p, N), cache);
+  SeparableSurface s = solveClosedForm(modalProblem(p, N), cache);
+  if (hasGeneralSlots(p)) imposeBoundaryData(s, p);  // the joins exact, whatever N
+  return s;
 }
 
 MethodSolution solveReference(const PdeProblem& p, double tolerance, BasisCache* cache) {
@@ -95,28 +151,13 @@ MethodSolution solveReference(const PdeProblem& p, double tolerance, BasisCache*
     return out;
   }
   out.used.kind = MethodKind::Reference;
-  // Periodic data: Fourier modes converge geometrically; double N until nothing changes.
-  // Open data: Chebyshev degrees up to kMaxOpenDegree, stopping where the change is smallest
-  // (past it, rounding in the polynomial solve grows faster than the interpolant improves).
-  const bool periodic = allPeriodic(p);
+  // N doubles until the surface stops changing. Open data go straight to the end-matched
+  // Fourier modes (N > 20): the Chebyshev interpolants' polynomial continuation is unstable
+  // near degree 20 (the interior can move by 7 % between degrees 16 and 20 with the boundary
+  // data met to 1e-9), the periodic one is not.
   std::vector<int> steps;
-  if (periodic)
-    for (int N = 16; N <= 1024; N *= 2) steps.push_back(N);
-  else
-    for (int N = 4; N <= kMaxOpenDegree; N += 2) steps.push_back(N);
-  SeparableSurface prev = solveModal(p, steps[0], cache);
-  double best = INFINITY;
-  for (size_t k = 1; k < steps.size(); ++k) {
-    SeparableSurface cur = solveModal(p, steps[k], cache);
-    const double c = change(prev, cur);
-    if (!periodic && c > best) break;  // the previous step was the most accurate
-    best = c;
-    out.surface = cur;
-    out.referenceTerms = steps[k];
-    out.referenceChange = c;
-    if (c < tolerance) break;
-    prev = std::move(cur);
-  }
+  for (int N = allPeriodic(p) ? 16 : 32; N <= 1024; N *= 2) steps.push_back(N);
+  refine(p, steps, tolerance, cache, &out);
   return out;
 }
 

@@ -12,29 +12,13 @@
 
 #include "common/errors.hpp"
 #include "methods/approximate.hpp"
+#include "methods/boundary_lift.hpp"
 #include "methods/method.hpp"
 #include "pde/closed_form.hpp"
 
 namespace pdesurf {
 
 namespace {
-
-// Hermite basis of degree 2n-1 on [0,1]: h[s] has unit (end, derivative) slot s = end*n + i.
-std::vector<std::vector<double>> hermiteBasis(int n) {
-  Eigen::MatrixXd a(2 * n, 2 * n);
-  for (int end = 0; end < 2; ++end)
-    for (int i = 0; i < n; ++i)
-      for (int k = 0; k < 2 * n; ++k) {
-        double f = 1.0;  // d^i/du^i u^k at u = end
-        for (int q = 0; q < i; ++q) f *= k - q;
-        a(end * n + i, k) = k < i ? 0.0 : f * (end == 0 ? (k == i ? 1.0 : 0.0) : 1.0);
-      }
-  const Eigen::MatrixXd inv = a.inverse();
-  std::vector<std::vector<double>> h(2 * n, std::vector<double>(2 * n));
-  for (int s = 0; s < 2 * n; ++s)
-    for (int k = 0; k < 2 * n; ++k) h[s][k] = inv(k, s);
-  return h;
-}
 
 // u^{n-1} (u-1)^n sin(m u) = Re(-i e^{i m u} · u^{n-1}(u-1)^n).
 UFactor correctionFactor(int n, int m) {

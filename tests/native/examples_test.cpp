@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/join_certificate.hpp"
+#include "methods/measures.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 #include "test_util.hpp"
@@ -41,7 +42,11 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
       CAPTURE(sp.patch->name);
       if (sp.patch->kind == PatchKind::Pde) {
         CHECK(boundaryError(sp.patch->pde, sp.surface) < 1e-10);
-        CHECK(pdeResidual(sp.patch->pde, sp.surface) < 1e-9);
+        // The closed form solves exactly; a general method (auto's modal) meets the boundary
+        // data exactly and approximates the interior: its residual relative to the largest
+        // operator term (interiorResidual, methods/measures.hpp; fig5 1.5e-10, ref-pipe-tjoint 2e-11).
+        if (sp.used.kind == MethodKind::Closed) CHECK(testing::pdeResidual(sp.patch->pde, sp.surface) < 1e-9);
+        else CHECK(interiorResidual(sp.patch->pde, sp.surface).relative < 1e-9);
       }
       const Mesh m = tessellate(sp.surface, 32, 48);
       REQUIRE(m.vertexCount() == 33u * 49u);

@@ -1,0 +1,25 @@
+// The boundary data of a PDE patch imposed exactly on an approximate solution (seed 000's own
+// device, Eq. 10: a Hermite lift in u carries the boundary functions). A method that
+// approximates the boundary functions (modal: Fourier modes or a Chebyshev interpolant) meets
+// its approximations, not the data; a blend is judged at its joins, so the approximation may
+// touch the interior only. For each coordinate of order 2n, with h_s the Hermite polynomials
+// of degree 2n-1 (h_s carries the derivative i at the end e of slot s = e*n + i):
+//   X  <-  X - Σ_s h_s(u) ∂^i_u X(e, v) + Σ_s h_s(u) data_s(v)
+// The first sum removes every term's own boundary values (a polynomial piece added to its
+// u-factor, so no term is added), the second adds the data as given (general functions
+// evaluated exactly). The change is L-small where the approximation is good; its size is the
+// PDE residual (interiorResidual, methods/measures.hpp), reported, never the joins.
+#pragma once
+#include <vector>
+
+#include "pde/pde_problem.hpp"
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf {
+
+// Hermite basis of degree 2n-1 on [0, 1], ascending powers: h[s] has unit slot s = end*n + i.
+std::vector<std::vector<double>> hermiteBasis(int n);
+
+void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p);
+
+}  // namespace pdesurf
