@@ -138,6 +138,20 @@ int main() {
   }
   std::printf("(solve times of the blend in microseconds, median)\n");
 
+  // Ends by reference (issue 17): the derivation alone (parseScene), with the solve, and with
+  // a 64² drawing; the last two rows are hostile expressions of tests/hostile/expressions.
+  std::printf("\nends by reference [us, median]\n%-28s %12s %14s %16s\n", "scene", "derive", "derive+solve", "+draw 64x64");
+  for (const std::string file : {"ref-sphere-fillet.json", "ref-torus-plane.json", "ref-pipe-tjoint.json", "ref-offset-cylinders-g2.json",
+                                 "../tests/hostile/expressions/product-300-curve.json", "../tests/hostile/expressions/trimmed-power-60-g2.json"}) {
+    const std::string text = readText(dir + "/" + file);
+    const double derive = medianSeconds([&] { sink = parseScene(text).patches.size(); });
+    const double solve = medianSeconds([&] { sink = solveScene(parseScene(text)).size(); });
+    const double draw = medianSeconds([&] {
+      for (const SolvedPatch& sp : solveScene(parseScene(text))) sink = tessellate(sp.surface, 64, 64).vertexCount();
+    });
+    std::printf("%-28s %12.1f %14.1f %16.1f\n", file.substr(file.rfind('/') + 1).c_str(), derive * 1e6, solve * 1e6, draw * 1e6);
+  }
+
   // Seed 002: one solve from scratch (assemble, factor, solve) against a solve that reuses the
   // factorisation (a drag of the initial surface's control points). 17x17 is degree 16, the cap.
   std::printf("\nvariational Bezier surfaces (membrane, continuous normals of degree 3, lambda 10, gamma 1)\n");

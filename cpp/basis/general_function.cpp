@@ -2,12 +2,13 @@
 
 #include "common/errors.hpp"
 #include "common/text.hpp"
+#include "expr/budget.hpp"
 #include "expr/taylor.hpp"
 
 namespace pdesurf {
 
 namespace {
-constexpr size_t kMaxDerivativeNodes = 200000;  // a bound on symbolic swell
+constexpr size_t kMaxDerivativeNodes = 200000;  // nodes built per derivative: a bound on symbolic swell
 }
 
 double GeneralFunction::eval(double v, int k) const {
@@ -16,10 +17,9 @@ double GeneralFunction::eval(double v, int k) const {
   // cost grows with k², where each symbolic order multiplies the expression.
   if (k > 2) return derivativeAt(*derivs_.front(), ExprVar::V, vars, k);
   while (static_cast<int>(derivs_.size()) <= k) {
-    Expr next = derivative(derivs_.back(), ExprVar::V);
-    if (nodeCount(next) > kMaxDerivativeNodes)
-      throw Error(ErrorCode::TooLarge, "'" + clipText(text_, 200) + "' is too complex to differentiate " + std::to_string(k) + " times");
-    derivs_.push_back(std::move(next));
+    const std::string what = "'" + clipText(text_, 200) + "': its derivative of order " + std::to_string(derivs_.size()) + " would";
+    ExprBudget budget(kMaxDerivativeNodes, what);  // stops the build at the first node over it
+    derivs_.push_back(derivative(derivs_.back(), ExprVar::V));
   }
   return evaluate(*derivs_[k], vars);
 }

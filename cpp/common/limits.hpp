@@ -30,9 +30,12 @@ constexpr int kBezierDegree = 16;
 // 16 with a 256² field: ~0.1 s natively from scratch); the total stops 64 such patches. At the
 // cap, 13 of them: ~1-2 s natively.
 constexpr size_t kBezierAssembly = size_t{1} << 29;
-// Nodes of one derived condition of an end given by reference (scene version 3): S_tt of a
-// 1000-character expression 64 levels deep stays far below; what exceeds it is refused
-// before it is split or printed.
+// Expression nodes built to derive the ends given by reference of one scene (version 3),
+// summed over its blends, with the pointwise expressions and partial derivatives of the
+// surfaces they trim along a curve. Counted while the graph is built (expr/budget.hpp): the
+// first node over it stops the derivation with TooLarge. Measured figures: docs/limits.md.
 constexpr size_t kDerivedNodes = 200000;
+// A derived condition's text (shown in the page, typed by detach) is elided past this.
+constexpr size_t kDerivedTextChars = 2000;
 
 }  // namespace pdesurf::limits

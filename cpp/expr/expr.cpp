@@ -1,8 +1,13 @@
 #include "expr/expr.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
+
+#include "expr/budget.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 
@@ -10,30 +15,98 @@ namespace {
 
 using Op = ExprNode::Op;
 
-Expr make(Op op, const Expr& a, const Expr& b = nullptr) {
+// The interning table: one entry per distinct live node, keyed on what makes it distinct
+// (op, value bits, variable or function, the children's identities). Entries are weak, so the
+// table never keeps a node alive; dead entries are swept when the table has doubled.
+struct Key {
+  uint8_t op, sub;  // sub: the variable or the function
+  uint64_t bits;    // the constant's bit pattern (0.0 and -0.0 stay distinct)
+  const ExprNode *a, *b;
+  bool operator==(const Key& o) const { return op == o.op && sub == o.sub && bits == o.bits && a == o.a && b == o.b; }
+};
+
+struct KeyHash {
+  size_t operator()(const Key& k) const {
+    uint64_t h = k.bits * 0x9E3779B97F4A7C15ull;
+    h ^= (reinterpret_cast<uintptr_t>(k.a) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
+    h ^= (reinterpret_cast<uintptr_t>(k.b) + 0x85EBCA77C2B2AE63ull + (h << 6) + (h >> 2));
+    h ^= (uint64_t{k.op} << 8 | k.sub) * 0xC2B2AE3D27D4EB4Full;
+    return static_cast<size_t>(h ^ (h >> 29));
+  }
+};
+
+struct Table {
+  std::unordered_map<Key, std::weak_ptr<const ExprNode>, KeyHash> map;
+  size_t sweepAt = 4096;
+};
+
+Table& table() {
+  thread_local Table t;
+  return t;
+}
+
+constexpr uint64_t kTreeSaturated = uint64_t{1} << 62;
+
+Expr intern(Op op, uint8_t sub, double value, const Expr& a, const Expr& b) {
+  ExprBudget::charge();
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  Table& t = table();
+  std::weak_ptr<const ExprNode>& slot = t.map[Key{static_cast<uint8_t>(op), sub, bits, a.get(), b.get()}];
+  if (Expr live = slot.lock()) return live;
   auto n = std::make_shared<ExprNode>();
   n->op = op;
+  n->value = value;
+  if (op == Op::Var) n->var = static_cast<ExprVar>(sub), n->vars = static_cast<uint8_t>(1u << sub);
+  if (op == Op::Call) n->fn = static_cast<ExprFn>(sub);
   n->a = a;
   n->b = b;
+  for (const Expr& c : {a, b})
+    if (c) {
+      n->vars |= c->vars;
+      n->depth = std::max(n->depth, c->depth + 1);
+      n->treeSize = std::min(kTreeSaturated, n->treeSize + c->treeSize);
+    }
+  slot = n;
+  if (t.map.size() > t.sweepAt) {
+    for (auto it = t.map.begin(); it != t.map.end();) it = it->second.expired() ? t.map.erase(it) : std::next(it);
+    t.sweepAt = std::max<size_t>(4096, 2 * t.map.size());
+  }
   return n;
 }
+
+Expr make(Op op, const Expr& a, const Expr& b = nullptr) { return intern(op, 0, 0.0, a, b); }
 
 bool isValue(const Expr& e, double c) { return e->op == Op::Const && e->value == c; }
 
+// Set while a node's children are being released: nodes that die meanwhile hand their own
+// children to it instead of recursing. A plain pointer, so thread exit has nothing to order.
+thread_local std::vector<Expr>* releasing = nullptr;
+
 }  // namespace
 
-Expr constant(double c) {
-  auto n = std::make_shared<ExprNode>();
-  n->value = c;
-  return n;
+ExprNode::~ExprNode() {
+  if (!a && !b) return;
+  if (releasing) {
+    if (a) releasing->push_back(std::move(a));
+    if (b) releasing->push_back(std::move(b));
+    return;
+  }
+  std::vector<Expr> pending;
+  releasing = &pending;
+  if (a) pending.push_back(std::move(a));
+  if (b) pending.push_back(std::move(b));
+  while (!pending.empty()) {
+    Expr x = std::move(pending.back());
+    pending.pop_back();
+    x.reset();  // may push its children
+  }
+  releasing = nullptr;
 }
 
-Expr variable(ExprVar v) {
-  auto n = std::make_shared<ExprNode>();
-  n->op = Op::Var;
-  n->var = v;
-  return n;
-}
+Expr constant(double c) { return intern(Op::Const, 0, c, nullptr, nullptr); }
+
+Expr variable(ExprVar v) { return intern(Op::Var, static_cast<uint8_t>(v), 0.0, nullptr, nullptr); }
 
 Expr negate(const Expr& a) {
   if (a->op == Op::Const) return constant(-a->value);
@@ -81,11 +154,7 @@ Expr power(const Expr& a, const Expr& b) {
 
 Expr call(ExprFn f, const Expr& a) {
   if (a->op == Op::Const) return constant(applyFn(f, a->value));
-  auto n = std::make_shared<ExprNode>();
-  n->op = Op::Call;
-  n->fn = f;
-  n->a = a;
-  return n;
+  return intern(Op::Call, static_cast<uint8_t>(f), 0.0, a, nullptr);
 }
 
 const char* exprFnName(ExprFn f) {
@@ -123,149 +192,46 @@ double applyFn(ExprFn f, double x) {
   return NAN;
 }
 
-double evaluate(const ExprNode& e, const double* vars) {
+namespace {
+
+// A tree walk costs its tree size; past this, a shared DAG runs its compiled program instead.
+constexpr uint64_t kTreeWalkMax = 4096;
+
+double walk(const ExprNode& e, const double* vars) {
   switch (e.op) {
     case Op::Const: return e.value;
     case Op::Var: return vars[static_cast<int>(e.var)];
-    case Op::Neg: return -evaluate(*e.a, vars);
-    case Op::Add: return evaluate(*e.a, vars) + evaluate(*e.b, vars);
-    case Op::Sub: return evaluate(*e.a, vars) - evaluate(*e.b, vars);
-    case Op::Mul: return evaluate(*e.a, vars) * evaluate(*e.b, vars);
-    case Op::Div: return evaluate(*e.a, vars) / evaluate(*e.b, vars);
-    case Op::Pow: {
-      const double base = evaluate(*e.a, vars);
-      if (e.b->op == Op::Const) {  // integer powers by multiplication: exact for negative bases
-        const double p = e.b->value;
-        if (p == 2) return base * base;
-        if (p == 3) return base * base * base;
-      }
-      return std::pow(base, evaluate(*e.b, vars));
-    }
-    case Op::Call: return applyFn(e.fn, evaluate(*e.a, vars));
+    case Op::Neg: return -walk(*e.a, vars);
+    case Op::Add: return walk(*e.a, vars) + walk(*e.b, vars);
+    case Op::Sub: return walk(*e.a, vars) - walk(*e.b, vars);
+    case Op::Mul: return walk(*e.a, vars) * walk(*e.b, vars);
+    case Op::Div: return walk(*e.a, vars) / walk(*e.b, vars);
+    case Op::Pow: return powerValue(walk(*e.a, vars), *e.b, e.b->op == Op::Const ? e.b->value : walk(*e.b, vars));
+    case Op::Call: return applyFn(e.fn, walk(*e.a, vars));
   }
   return NAN;
 }
 
-bool isConstant(const Expr& e) { return e->op == Op::Const; }
-
-bool dependsOn(const Expr& e, ExprVar v) {
-  if (!e) return false;
-  if (e->op == Op::Var) return e->var == v;
-  return dependsOn(e->a, v) || dependsOn(e->b, v);
-}
-
-size_t nodeCount(const Expr& e) { return e ? 1 + nodeCount(e->a) + nodeCount(e->b) : 0; }
-
-namespace {
-
-// Precedence for printing: sum 1, product 2, unary minus 3, power 4, atoms 5.
-int precedence(const ExprNode& e) {
-  switch (e.op) {
-    case Op::Add:
-    case Op::Sub: return 1;
-    case Op::Mul:
-    case Op::Div: return 2;
-    case Op::Neg: return 3;
-    case Op::Pow: return 4;
-    case Op::Const: return e.value < 0 ? 3 : 5;
-    default: return 5;
-  }
-}
-
-std::string number(double x) {
-  if (x == 0) return "0";  // -0 (a negated zero condition) reads as 0
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  // Prefer the shortest text that reads back to the same double.
-  for (int digits = 1; digits < 17; ++digits) {
-    char shorter[32];
-    std::snprintf(shorter, sizeof shorter, "%.*g", digits, x);
-    if (std::strtod(shorter, nullptr) == x) return shorter;
-  }
-  return buf;
-}
-
 }  // namespace
 
-std::string toText(const Expr& e, const char* vName, const char* uName) {
-  auto sub = [&](const Expr& x, int minPrec) {
-    const std::string t = toText(x, vName, uName);
-    return precedence(*x) < minPrec ? "(" + t + ")" : t;
-  };
-  switch (e->op) {
-    case Op::Const: return number(e->value);
-    case Op::Var: return e->var == ExprVar::V ? vName : uName;
-    case Op::Neg: return "-" + sub(e->a, 4);
-    case Op::Add: return sub(e->a, 1) + " + " + sub(e->b, 2);
-    case Op::Sub: return sub(e->a, 1) + " - " + sub(e->b, 2);
-    case Op::Mul: return sub(e->a, 2) + "*" + sub(e->b, 3);
-    case Op::Div: return sub(e->a, 2) + "/" + sub(e->b, 4);
-    case Op::Pow: return sub(e->a, 5) + "^" + sub(e->b, 4);
-    case Op::Call: return std::string(exprFnName(e->fn)) + "(" + toText(e->a, vName, uName) + ")";
+double powerValue(double base, const ExprNode& exponent, double p) {
+  if (exponent.op == Op::Const) {  // integer powers by multiplication: exact for negative bases
+    if (p == 2) return base * base;
+    if (p == 3) return base * base * base;
   }
-  return "?";
+  return std::pow(base, p);
 }
 
-Expr substitute(const Expr& e, ExprVar var, const Expr& by) {
-  if (!dependsOn(e, var)) return e;
-  switch (e->op) {
-    case Op::Var: return by;
-    case Op::Neg: return negate(substitute(e->a, var, by));
-    case Op::Add: return add(substitute(e->a, var, by), substitute(e->b, var, by));
-    case Op::Sub: return subtract(substitute(e->a, var, by), substitute(e->b, var, by));
-    case Op::Mul: return multiply(substitute(e->a, var, by), substitute(e->b, var, by));
-    case Op::Div: return divide(substitute(e->a, var, by), substitute(e->b, var, by));
-    case Op::Pow: return power(substitute(e->a, var, by), substitute(e->b, var, by));
-    case Op::Call: return call(e->fn, substitute(e->a, var, by));
-    case Op::Const: break;
-  }
-  return e;
+double evaluate(const ExprNode& e, const double* vars) {
+  if (e.treeSize <= kTreeWalkMax) return walk(e, vars);
+  if (!e.program) e.program = std::make_shared<const ExprProgram>(std::vector<const ExprNode*>{&e});
+  double out;
+  e.program->run(&vars[0], &vars[1], 1, &out);
+  return out;
 }
 
-Expr substitute(const Expr& e, ExprVar var, double value) { return substitute(e, var, constant(value)); }
+bool isConstant(const Expr& e) { return e->op == Op::Const; }
 
-Expr derivative(const Expr& e, ExprVar var) {
-  if (!dependsOn(e, var)) return constant(0.0);
-  const Expr& a = e->a;
-  const Expr& b = e->b;
-  switch (e->op) {
-    case Op::Const: return constant(0.0);
-    case Op::Var: return constant(1.0);
-    case Op::Neg: return negate(derivative(a, var));
-    case Op::Add: return add(derivative(a, var), derivative(b, var));
-    case Op::Sub: return subtract(derivative(a, var), derivative(b, var));
-    case Op::Mul: return add(multiply(derivative(a, var), b), multiply(a, derivative(b, var)));
-    case Op::Div:
-      return divide(subtract(multiply(derivative(a, var), b), multiply(a, derivative(b, var))), multiply(b, b));
-    case Op::Pow:
-      if (!dependsOn(b, var))  // a^c: c a^{c-1} a'
-        return multiply(multiply(b, power(a, subtract(b, constant(1.0)))), derivative(a, var));
-      // a^b = exp(b log a)
-      return multiply(e, add(multiply(derivative(b, var), call(ExprFn::Log, a)), divide(multiply(b, derivative(a, var)), a)));
-    case Op::Call: {
-      const Expr da = derivative(a, var);
-      Expr outer;
-      switch (e->fn) {
-        case ExprFn::Sqrt: outer = divide(constant(0.5), e); break;
-        case ExprFn::Exp: outer = e; break;
-        case ExprFn::Log: outer = divide(constant(1.0), a); break;
-        case ExprFn::Sin: outer = call(ExprFn::Cos, a); break;
-        case ExprFn::Cos: outer = negate(call(ExprFn::Sin, a)); break;
-        case ExprFn::Tan: outer = add(constant(1.0), multiply(e, e)); break;
-        case ExprFn::Asin: outer = divide(constant(1.0), call(ExprFn::Sqrt, subtract(constant(1.0), multiply(a, a)))); break;
-        case ExprFn::Acos: outer = divide(constant(-1.0), call(ExprFn::Sqrt, subtract(constant(1.0), multiply(a, a)))); break;
-        case ExprFn::Atan: outer = divide(constant(1.0), add(constant(1.0), multiply(a, a))); break;
-        case ExprFn::Sinh: outer = call(ExprFn::Cosh, a); break;
-        case ExprFn::Cosh: outer = call(ExprFn::Sinh, a); break;
-        case ExprFn::Tanh: outer = subtract(constant(1.0), multiply(e, e)); break;
-        case ExprFn::Abs: outer = call(ExprFn::Sign, a); break;  // 0 at the kink: the one-sided derivatives' mean
-        case ExprFn::Sign: return constant(0.0);
-        case ExprFn::General: return da;
-      }
-      return multiply(outer, da);
-    }
-  }
-  return constant(0.0);
-}
+bool dependsOn(const Expr& e, ExprVar v) { return e && (e->vars >> static_cast<int>(v) & 1u); }
 
 }  // namespace pdesurf

@@ -9,6 +9,18 @@ namespace {
 
 using Op = ExprNode::Op;
 constexpr size_t kMaxProducts = 512;  // past this, give up expanding and keep the expression
+// The expansion walks the expression as a tree, and a shared DAG (a derived condition) can be
+// exponentially larger as a tree: past this much work (nodes visited, products and factors
+// copied), or this deep, the whole expression is kept as the remainder (solved by the general
+// methods) instead.
+constexpr size_t kMaxWork = 200000;
+constexpr uint32_t kMaxDepth = 2000;
+struct GiveUp {};
+thread_local size_t work = 0;
+void visit(size_t units = 1) {
+  work += units;
+  if (work > kMaxWork) throw GiveUp{};
+}
 
 // A factor of a product, in one variable: v^n, or trig/exp of (w x + φ), or opaque.
 enum class Kind { Cos, Sin, Exp };
@@ -31,6 +43,7 @@ struct Linear {
 
 // e = w x + phi for one variable x (and no other variable)?
 Linear linearIn(const Expr& e, ExprVar x) {
+  visit();
   const ExprVar other = x == ExprVar::V ? ExprVar::U : ExprVar::V;
   if (dependsOn(e, other)) return {false, 0, 0};
   switch (e->op) {
@@ -83,6 +96,7 @@ Sum multiplySums(const Sum& a, const Sum& b, bool* tooBig) {
   Sum out;
   for (const Product& x : a)
     for (const Product& y : b) {
+      visit(1 + x.opaque.size() + y.opaque.size());
       Product p = x;
       p.coef *= y.coef;
       for (int k = 0; k < 2; ++k) {
@@ -96,6 +110,7 @@ Sum multiplySums(const Sum& a, const Sum& b, bool* tooBig) {
 }
 
 Sum toSum(const Expr& e) {
+  visit();
   switch (e->op) {
     case Op::Const: {
       Product p;
@@ -268,7 +283,15 @@ Split splitExpression(const Expr& e, bool secondPolynomialOnly) {
     out.remainder = out.remainder ? add(out.remainder, part) : part;
   };
 
-  for (const Product& p : toSum(e)) {
+  Sum sum;
+  try {
+    work = 0;
+    if (e->depth > kMaxDepth || e->treeSize > kMaxWork) throw GiveUp{};  // the walk alone would pass the cap
+    sum = toSum(e);
+  } catch (const GiveUp&) {
+    sum = opaque(e);
+  }
+  for (const Product& p : sum) {
     if (p.coef == 0.0) continue;
     if (!p.opaque.empty() || (secondPolynomialOnly && !p.waves[1].empty())) {
       addRemainder(p);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/limits.hpp"
+#include "expr/budget.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/trimline_checks.hpp"
 
@@ -94,9 +95,11 @@ void derive(DerivedEnd& d) {
   const EndReference& ref = *d.ref;
   const PrimarySurface& S = d.surface->primary;
   d.e.tau = ref.curve ? ref.tau : constant(ref.atT1 ? S.t1 : S.t0);
+  // Built under the scene's budget (deriveEnds); S_tt only where curvature is asked.
+  const Vec3Expr St = map3(S.full, derivative);
   d.e.P = onTrimline(S.full, d.e.tau);
-  d.e.T = onTrimline(map3(S.full, derivative), d.e.tau);
-  d.e.C = onTrimline(map3(map3(S.full, derivative), derivative), d.e.tau);
+  d.e.T = onTrimline(St, d.e.tau);
+  if (ref.continuity == Continuity::Curvature) d.e.C = onTrimline(map3(St, derivative), d.e.tau);
   d.meanT = checkTrimline(ref, S, d.e, d.blend->pde.v0, d.blend->pde.v1);
 }
 
@@ -112,7 +115,7 @@ double meanGap(const std::array<Vec3Expr, 2>& pos, double v0, double v1) {
 }
 
 // The blend's boundary slots from its ends (derived, or typed for the extra conditions).
-void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& derived) {
+void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& derived, ExprBudget& budget) {
   std::array<Vec3Expr, 2> pos;
   for (int end = 0; end < 2; ++end) {
     if (derived[end]) {
@@ -125,6 +128,7 @@ void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& deriv
   for (int end = 0; end < 2; ++end) {
     if (!derived[end]) continue;
     EndReference& ref = blend.ends[end];
+    budget.setPath(ref.path);
     const DerivedEnd& d = *derived[end];
     // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
     // ends touch); "surface": power 1 continues the surface's t at its own speed.
@@ -143,10 +147,7 @@ void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& deriv
       if (n >= 3) e[2] = level >= 2 ? multiply(constant(k * k), multiply(multiply(ref.power, ref.power), d.e.C[c])) : constant(0.0);
       ref.derived[c].clear();
       for (int i = 0; i < n; ++i) {
-        if (nodeCount(e[i]) > limits::kDerivedNodes)
-          fail(ErrorCode::TooLarge, ref.path, std::string("the derived condition of ") + "xyz"[c] + " has more than " +
-                                                 std::to_string(limits::kDerivedNodes) + " nodes: simplify the surface's expression");
-        ref.derived[c].push_back(toText(e[i]));
+        ref.derived[c].push_back(toTextLimited(e[i], limits::kDerivedTextChars));
         slots[i] = scene_json::slotFromExpr(e[i], ref.path + " (" + ref.derived[c].back() + ")");
       }
     }
@@ -173,6 +174,8 @@ void recordJoin(const DerivedEnd& d, bool trimmed) {
 }
 
 // Step 5: the surface met along a curve is drawn from its trimline: t = tau + s (t_far - tau), s in [0, 1].
+// Its pointwise expression and the partial derivatives drawing needs are built here, under the
+// scene's budget, so tessellation never differentiates an unbounded graph.
 void trim(Patch& surface, const EndReference& ref) {
   PrimarySurface& S = surface.primary;
   const Expr tFar = constant(ref.atT1 ? S.t0 : S.t1);
@@ -180,6 +183,7 @@ void trim(Patch& surface, const EndReference& ref) {
   for (int c = 0; c < 3; ++c) {
     S.terms[c].clear();
     S.pointwise[c] = substitute(S.full[c], ExprVar::U, t);
+    S.pointwisePartials[c] = partialDerivatives(S.pointwise[c], true);
   }
   S.t0 = 0.0;
   S.t1 = 1.0;
@@ -193,6 +197,9 @@ void trim(Patch& surface, const EndReference& ref) {
 // between ends, derive and check every end, write every blend's conditions, record every
 // join in the trimmed parametrisation, and only then trim.
 void deriveEnds(Scene& scene) {
+  // One budget for the whole scene: every node built for any end (and for the surfaces they
+  // trim) counts, and the first node over the limit stops the derivation.
+  ExprBudget budget(limits::kDerivedNodes, "the derived conditions of the scene's ends and the surfaces they trim");
   std::vector<DerivedEnd> all;
   for (Patch& blend : scene.patches) {
     if (blend.kind != PatchKind::Pde) continue;
@@ -201,16 +208,22 @@ void deriveEnds(Scene& scene) {
   }
   if (all.empty()) return;
   checkRules(all);
-  for (DerivedEnd& d : all) derive(d);
+  for (DerivedEnd& d : all) {
+    budget.setPath(d.ref->path);
+    derive(d);
+  }
   for (size_t i = 0; i < all.size();) {
     std::array<const DerivedEnd*, 2> ends = {nullptr, nullptr};
     Patch* blend = all[i].blend;
     for (; i < all.size() && all[i].blend == blend; ++i) ends[all[i].end] = &all[i];
-    writeConditions(*blend, ends);
+    writeConditions(*blend, ends, budget);
   }
   for (const DerivedEnd& d : all) recordJoin(d, trimOf(all, d.surface) != nullptr);
   for (const DerivedEnd& d : all)
-    if (d.ref->curve) trim(*d.surface, *d.ref);
+    if (d.ref->curve) {
+      budget.setPath(d.ref->path);
+      trim(*d.surface, *d.ref);
+    }
 }
 
 }  // namespace pdesurf

@@ -38,6 +38,9 @@ struct PrimarySurface {
   // (null otherwise); blend ends by reference are derived from it (scene/derived_ends.hpp).
   std::array<Expr, 3> full;
   bool trimmed = false;  // reparametrised by a curve trimline: t0 = 0 is the trimline
+  // A trimmed surface's pointwise expression with its partial derivatives (X, X_t, X_v, X_tt,
+  // X_tv, X_vv), built under the scene's budget when it is trimmed; empty otherwise.
+  std::array<std::vector<Expr>, 3> pointwisePartials;
 };
 
 // Version 3: how smoothly a blend's end meets the surface it names (G0, G1, G2).

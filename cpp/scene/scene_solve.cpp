@@ -76,6 +76,7 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
   for (int c = 0; c < 3; ++c)
     for (const PrimaryTerm& t : p.terms[c]) s.component[c].push_back({t.v, tFactor(t.t, t.coef)});
   s.pointwise = p.pointwise;
+  s.pointwisePartials = p.pointwisePartials;
   return s;
 }
 

@@ -34,6 +34,10 @@ void combineRows(const Tabulation& t, EmitRow&& emitRow) {
   const int Q = row.quantities;
   for (int q = 0; q < Q; ++q)
     for (int c = 0; c < 3; ++c) row.d[q][c].resize(m);
+  std::vector<double> rowV(m);  // v of the current row, for the pointwise programs
+  std::array<std::vector<double>, 6> part;
+  for (auto& p : part) p.resize(m);
+  std::array<double*, 6> partOut{part[0].data(), part[1].data(), part[2].data(), part[3].data(), part[4].data(), part[5].data()};
   for (int j = 0; j <= nv; ++j) {
     for (int c = 0; c < 3; ++c) {
       const int T = t.terms[c];
@@ -51,13 +55,13 @@ void combineRows(const Tabulation& t, EmitRow&& emitRow) {
       }
     }
     for (int c = 0; c < 3; ++c) {  // rare: surfaces typed as non-separable expressions
-      const auto& pw = t.pointwise[c];
-      if (pw.empty()) continue;
+      if (!t.pointwiseProgram[c]) continue;
+      std::fill(rowV.begin(), rowV.end(), t.v[j]);
+      t.pointwiseProgram[c]->runAll(rowV.data(), t.u.data(), m, partOut.data());
       for (size_t i = 0; i < m; ++i) {
-        const double vars[2] = {t.v[j], t.u[i]};
         for (int q = 0; q < Q; ++q) {
           double& x = row.d[q][c][i];
-          x += evaluate(*pw[q], vars);
+          x += part[q][i];
           if (!std::isfinite(x))
             throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
                                                   std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) + ")");

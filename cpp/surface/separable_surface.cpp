@@ -6,6 +6,12 @@ double evalComponent(const SeparableSurface& s, int c, double u, double v, int d
   double sum = 0.0;
   for (const SeparableTerm& t : s.component[c]) sum += t.G.eval(u, du) * t.g.eval(v, dv);
   if (s.pointwise[c]) {
+    const auto& pre = s.pointwisePartials[c];
+    for (int q = 0; q < 6; ++q)  // built beforehand (X, X_u, X_v, X_uu, X_uv, X_vv)
+      if (q < static_cast<int>(pre.size()) && kPartialOrders[q][0] == du && kPartialOrders[q][1] == dv) {
+        const double vars[2] = {v, u};
+        return sum + evaluate(*pre[q], vars);
+      }
     Expr d = s.pointwise[c];
     for (int k = 0; k < du; ++k) d = derivative(d, ExprVar::U);
     for (int k = 0; k < dv; ++k) d = derivative(d, ExprVar::V);

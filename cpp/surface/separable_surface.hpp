@@ -24,6 +24,9 @@ struct SeparableSurface {
   // Parts of a primary surface that do not separate (an expression in u and v, evaluated
   // point by point); nullptr when none. PDE solutions never have them.
   std::array<Expr, 3> pointwise;
+  // When not empty: pointwise[c] and its partial derivatives, X, X_u, X_v, X_uu, X_uv, X_vv,
+  // built (and bounded) beforehand, e.g. for a surface trimmed along a curve.
+  std::array<std::vector<Expr>, 3> pointwisePartials;
 };
 
 // ∂^{du+dv} X_c / ∂u^du ∂v^dv at (u, v) for component c (0, 1, 2).

@@ -59,10 +59,10 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
   for (int c = 0; c < 3; ++c) {
     const Expr& e = s.pointwise[c];
     if (!e) continue;
-    const Expr eu = derivative(e, ExprVar::U), ev = derivative(e, ExprVar::V);
-    t.pointwise[c] = {e, eu, ev};
-    if (maxDerivative >= 2)
-      for (const Expr& d : {derivative(eu, ExprVar::U), derivative(eu, ExprVar::V), derivative(ev, ExprVar::V)}) t.pointwise[c].push_back(d);
+    const size_t Q = maxDerivative >= 2 ? 6 : 3;
+    const auto& pre = s.pointwisePartials[c];
+    t.pointwise[c] = pre.size() >= Q ? std::vector<Expr>(pre.begin(), pre.begin() + Q) : partialDerivatives(e, maxDerivative >= 2);
+    t.pointwiseProgram[c] = std::make_shared<const ExprProgram>(t.pointwise[c]);
   }
   return t;
 }

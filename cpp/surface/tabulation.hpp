@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/limits.hpp"
+#include "expr/program.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf {
@@ -23,6 +24,9 @@ struct Tabulation {
   // Non-separable primary parts per component (or nullptr): the expression and its partial
   // derivatives, in the order X, X_u, X_v, X_uu, X_uv, X_vv (the first 3 or all 6).
   std::array<std::vector<Expr>, 3> pointwise;
+  // The same compiled into one program per component (outputs in that order), run once per
+  // grid row over all its points.
+  std::array<std::shared_ptr<const ExprProgram>, 3> pointwiseProgram;
 };
 
 // Throws Error(GridSize) outside 1..2048 per direction, Error(NonFinite) when a factor is not
