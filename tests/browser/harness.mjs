@@ -116,6 +116,16 @@ export async function viewStats(page, img) {
   return pixelStats(img, { x0: r.x0, y0: 40, x1: r.x1, y1: img.height - 50 }, BACKGROUND);
 }
 
+/**
+ * The bytes of a playwright Download as a Buffer. Read through its stream: download.path()
+ * is not available on a browser connected to (tests/browser/run.mjs's shared Chromium).
+ */
+export async function downloadBytes(download) {
+  const chunks = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
+  return Buffer.concat(chunks);
+}
+
 export const sameChecksum = (a, b) => Math.abs(a - b) <= 1e-9 * Math.abs(b);
 
 /**
