@@ -14,7 +14,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { execFileSync } from 'node:child_process';
-import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, OUT_DIR, ROOT, REPO, BACKGROUND, downloadBytes } from './harness.mjs';
+import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, OUT_DIR, ROOT, REPO, BACKGROUND } from './harness.mjs';
 import { decodePng } from './png-decode.mjs';
 import { blockAverage } from './image-diff.mjs';
 
@@ -29,7 +29,7 @@ export async function download(page, key) {
     page.waitForEvent('download', { timeout: 60_000 }),
     page.locator(`#panel [data-file="${key}"] button`).click(),
   ]);
-  const bytes = await downloadBytes(d);
+  const bytes = fs.readFileSync(await d.path());
   return { name: d.suggestedFilename(), bytes, ms: Date.now() - t0 };
 }
 
@@ -334,7 +334,7 @@ describe('exports from the page', { skip }, () => {
     ]) {
       const [d] = await Promise.all([app.waitForEvent('download', { timeout: 60_000 }), app.locator(`#panel [data-file="${key}"] button`).click()]);
       assert.equal(d.suggestedFilename(), `wu2015-fig3.${key}`);
-      check(await downloadBytes(d));
+      check(fs.readFileSync(await d.path()));
     }
     assert.deepEqual(await app.evaluate(() => window.__cspViolations), []);
     await app.close();

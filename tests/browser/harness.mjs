@@ -14,9 +14,9 @@ export const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '
 export const ROOT = process.env.PDESURF_TEST_ROOT ? path.resolve(process.env.PDESURF_TEST_ROOT) : REPO;
 const WASM_DIR = process.env.PDESURF_WASM_DIR || path.join(REPO, 'build', 'wasm');
 export const OUT_DIR = path.join(REPO, 'build', 'browser');
-export const CHROMIUM = '/usr/bin/chromium';
+const CHROMIUM = '/usr/bin/chromium';
 export const BACKGROUND = [0x20, 0x24, 0x2b]; // web/viewer/viewer.js BACKGROUND
-export const ARGS = [
+const ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
   '--use-gl=angle', '--use-angle=swiftshader',
@@ -34,22 +34,12 @@ export async function startHarness() {
   fs.mkdirSync(OUT_DIR, { recursive: true });
   const server = await startServer({ port: 0, root: ROOT, wasmDir: WASM_DIR });
   const base = `http://127.0.0.1:${server.address().port}`;
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-chromium-'));
   const { chromium } = await import('playwright-core');
-  const viewport = { width: 1280, height: 800 };
-  let browser = null, userDataDir = null, context;
-  if (process.env.PDESURF_BROWSER_WS) {
-    // tests/browser/run.mjs launched one Chromium for every file: a fresh context of its own
-    // (no cookies, storage or cache shared with any other file), without a launch per file.
-    browser = await chromium.connect(process.env.PDESURF_BROWSER_WS);
-    context = await browser.newContext({ viewport });
-  } else {
-    // A file run on its own launches its own Chromium. A persistent context is how
-    // playwright takes --user-data-dir.
-    userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-chromium-'));
-    context = await chromium.launchPersistentContext(userDataDir, {
-      executablePath: CHROMIUM, args: ARGS, headless: true, viewport,
-    });
-  }
+  // A persistent context is how playwright takes --user-data-dir.
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: CHROMIUM, args: ARGS, headless: true, viewport: { width: 1280, height: 800 },
+  });
   const problems = []; // console errors, page errors, failed requests
   let first = context.pages()[0];
 
@@ -74,9 +64,8 @@ export async function startHarness() {
     },
     async close() {
       await context.close();
-      if (browser) await browser.close(); // disconnects; the shared Chromium stays up
       await new Promise((r) => server.close(r));
-      if (userDataDir) fs.rmSync(userDataDir, { recursive: true, force: true });
+      fs.rmSync(userDataDir, { recursive: true, force: true });
     },
   };
 }
@@ -114,16 +103,6 @@ export async function viewStats(page, img) {
     return { x0: Math.ceil(view.left), x1: Math.floor(right) };
   });
   return pixelStats(img, { x0: r.x0, y0: 40, x1: r.x1, y1: img.height - 50 }, BACKGROUND);
-}
-
-/**
- * The bytes of a playwright Download as a Buffer. Read through its stream: download.path()
- * is not available on a browser connected to (tests/browser/run.mjs's shared Chromium).
- */
-export async function downloadBytes(download) {
-  const chunks = [];
-  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
-  return Buffer.concat(chunks);
 }
 
 export const sameChecksum = (a, b) => Math.abs(a - b) <= 1e-9 * Math.abs(b);

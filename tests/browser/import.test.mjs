@@ -10,7 +10,7 @@ import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, ROOT, downloadBytes } from './harness.mjs';
+import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, ROOT } from './harness.mjs';
 
 const exampleText = (id) => fs.readFileSync(path.join(ROOT, 'examples', `${id}.json`), 'utf8');
 const MiB = 1 << 20;
@@ -86,7 +86,7 @@ describe('opening scene files', { skip }, () => {
     await page.evaluate(() => { location.hash = '#example=you2004-fig2a'; });
     const example = await solvedAfter(page, before.solveCount);
     const [d] = await Promise.all([page.waitForEvent('download'), page.evaluate(() => document.querySelector('#panel [data-file="json"] button').click())]);
-    const text = (await downloadBytes(d)).toString('utf8');
+    const text = fs.readFileSync(await d.path(), 'utf8');
     before = await hooks(page);
     await pick(d.suggestedFilename(), text);
     const back = await solvedAfter(page, before.solveCount);
