@@ -42,17 +42,19 @@ setup() {
   install_npm_packages
 }
 
+# build_native [TARGET...], build_wasm [TARGET...]: every target (the benchmark too) unless
+# targets are named; scripts/test names only what its rows run.
 build_native() {
-  log "native build ($BUILD/native)"
+  log "native build ($BUILD/native${*:+: $*})"
   cmake -S "$ROOT" -B "$BUILD/native" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$BUILD/native" -j"$(nproc)"
+  cmake --build "$BUILD/native" -j"$(nproc)" ${1:+--target "$@"}
 }
 
 build_wasm() {
-  log "wasm build ($BUILD/wasm)"
+  log "wasm build ($BUILD/wasm${*:+: $*})"
   emcmake cmake -S "$ROOT" -B "$BUILD/wasm" -DCMAKE_BUILD_TYPE=Release \
     -DEigen3_DIR=/usr/share/eigen3/cmake -DCMAKE_CROSSCOMPILING_EMULATOR="$(command -v node)" >/dev/null
-  cmake --build "$BUILD/wasm" -j"$(nproc)"
+  cmake --build "$BUILD/wasm" -j"$(nproc)" ${1:+--target "$@"}
 }
 
 build_web() {
@@ -60,22 +62,32 @@ build_web() {
   node "$ROOT/scripts/build-web.mjs" --out "$BUILD/web" --wasm-dir "$BUILD/wasm"
 }
 
-# The native suite (core, CLI, doctest) with AddressSanitizer + UndefinedBehaviorSanitizer,
-# every report fatal (CMake option PDESURF_SANITIZE). -O1 -g with assertions on: usable
-# stacks, and the doctest suite runs in about a minute. gcc: no second compiler needed.
-build_asan() {
-  log "sanitized native build ($BUILD/asan)"
-  cmake -S "$ROOT" -B "$BUILD/asan" -DPDESURF_SANITIZE=ON -DCMAKE_CXX_COMPILER=g++ \
+# One clang tree, $BUILD/asan, for the sanitized native suite and the libFuzzer targets (CMake
+# options PDESURF_SANITIZE and PDESURF_FUZZ together): the core is compiled once with
+# AddressSanitizer + UndefinedBehaviorSanitizer (every report fatal) and libFuzzer's coverage
+# instrumentation, and the doctest suite, the CLI and the fuzz targets all link it. -O1 -g
+# with assertions on: usable stacks, and the doctest suite runs in about a minute.
+# (Until 2026-12 the sanitized suite was a g++ tree of its own and the fuzz targets a second
+# clang tree: the core was compiled twice more; docs/testing.md.)
+configure_asan() {
+  local cache="$BUILD/asan/CMakeCache.txt"
+  # A tree configured by g++ (before the merge) is started afresh rather than reconfigured.
+  if [ -f "$cache" ] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' "$cache"; then rm -rf "$BUILD/asan"; fi
+  cmake -S "$ROOT" -B "$BUILD/asan" -DPDESURF_SANITIZE=ON -DPDESURF_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" >/dev/null
+}
+
+build_asan() {
+  log "sanitized native build ($BUILD/asan: doctest suite, CLI)"
+  configure_asan
   cmake --build "$BUILD/asan" -j"$(nproc)" --target pdesurf_tests pdesurf
 }
 
-# The libFuzzer targets of tests/fuzz (CMake option PDESURF_FUZZ, clang only) and nothing else.
+# The libFuzzer targets of tests/fuzz, in the same tree (their work files: $BUILD/fuzz).
 build_fuzz() {
-  log "fuzz build ($BUILD/fuzz)"
-  cmake -S "$ROOT" -B "$BUILD/fuzz" -DPDESURF_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" >/dev/null
-  cmake --build "$BUILD/fuzz" -j"$(nproc)" --target scene_fuzz link_fuzz
+  log "fuzz build ($BUILD/asan: scene_fuzz, link_fuzz)"
+  configure_asan
+  cmake --build "$BUILD/asan" -j"$(nproc)" --target scene_fuzz link_fuzz
 }
 
 # Sanitizer reports: a stack for UBSan too; leaks count (the default on x86-64 Linux).

@@ -1,5 +1,6 @@
 # Fuzzing helpers shared by scripts/fuzz and scripts/test (docs/testing.md). Source after
 # common.sh and build_fuzz. Targets: scene (tests/fuzz/scene_fuzz.cpp), link (link_fuzz.cpp).
+# Binaries from build_fuzz ($BUILD/asan); seeds, corpora, findings and logs in $FUZZ_BUILD.
 FUZZ_BUILD="$BUILD/fuzz"
 FUZZ_TARGETS=(scene link)
 # Inputs up to 64 KiB (the link bomb seed is 63 KiB). -timeout: the examples take 2-400 ms
@@ -9,11 +10,12 @@ FUZZ_TARGETS=(scene link)
 # scene. 2 GiB resident (or in one malloc) is a finding.
 FUZZ_FLAGS=(-max_len=65536 -timeout=60 -rss_limit_mb=2048)
 
-fuzz_bin() { echo "$FUZZ_BUILD/tests/fuzz/$1_fuzz"; }
+fuzz_bin() { echo "$BUILD/asan/tests/fuzz/$1_fuzz"; }
 
 # fuzz_seeds TARGET: (re)writes $FUZZ_BUILD/seeds-TARGET from what exists now.
 fuzz_seeds() {
   rm -rf "$FUZZ_BUILD/seeds-$1"
+  mkdir -p "$FUZZ_BUILD"
   node "$ROOT/tests/fuzz/seeds.mjs" "$1" "$FUZZ_BUILD/seeds-$1" >/dev/null
 }
 
