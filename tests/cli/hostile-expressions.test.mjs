@@ -14,6 +14,10 @@ const HOSTILE = path.join(REPO, 'tests', 'hostile');
 const MANIFEST = JSON.parse(fs.readFileSync(path.join(HOSTILE, 'expressions.json'), 'utf8'));
 const CLI = process.env.PDESURF_CLI || path.join(REPO, 'build', 'native', 'pdesurf');
 const TMP = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-expr-'));
+// The sanitized CLI (scripts/test's sanitize row) runs these for memory errors; ASan's shadow
+// memory and quarantine and its slower code make the time and memory bounds meaningless there,
+// so they are checked on the release CLI (the cli row) only.
+const BOUNDED = !process.env.PDESURF_CLI_SANITIZED;
 
 // Runs the CLI under /usr/bin/time: exit status, stdout, stderr, CPU seconds, peak RSS in MB.
 function measured(args) {
@@ -32,6 +36,7 @@ function expectVerdict(c, r, what) {
     assert.match(r.stderr, new RegExp(`: ${c.verdict}: .*patches\\[\\d+\\]\\.ends\\.u[01]`), r.stderr);
     assert.ok(r.stderr.length <= 600 + 20, `${r.stderr.length} characters`);
   }
+  if (!BOUNDED) return;
   assert.ok(r.cpu <= 2.0, `${what}: ${r.cpu.toFixed(2)} s of CPU`);
   assert.ok(r.mb <= 300, `${what}: ${r.mb.toFixed(0)} MB`);
 }
