@@ -29,7 +29,7 @@ void requireFinite(const VExpansion& f, double v) {
 
 }  // namespace
 
-VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor) {
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor, bool dropNoise) {
   const double L = v1 - v0, omega = 2 * M_PI / L;
   const int K = std::max(1024, 16 * N);
   std::vector<double> samples(K + 1);
@@ -53,7 +53,8 @@ VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, doubl
   // surface's v-derivatives (normals, curvature, the PDE's ∂v^2n) times (kω)^j: leave them out.
   double largest = std::abs(a[0]);
   for (int k = 1; k <= N; ++k) largest = std::max(largest, 2.0 * std::max(std::abs(a[k]), std::abs(b[k])));
-  const double noise = std::max(1e-15 * largest, 2.0 * noiseFloor * K);  // a, b are K times the coefficients
+  // a, b are K times the coefficients; -1: keep every mode (the Bloor-Wilson baselines, as published)
+  const double noise = dropNoise ? std::max(1e-15 * largest, 2.0 * noiseFloor * K) : -1.0;
   VExpansion out;
   out.push_back({VFunction{Family::Poly, 1.0, 0}, a[0] / K});
   for (int k = 1; k <= N; ++k) {

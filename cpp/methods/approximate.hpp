@@ -14,9 +14,10 @@ double expansionValue(const VExpansion& f, double v, int k = 0);
 // f ≈ a_0 + Σ_{k=1}^{N} a_k cos(k ω v) + b_k sin(k ω v), ω = 2π / (v1 - v0): the Fourier series
 // of f's periodic extension, coefficients by the trapezoidal rule (which takes the mean of a
 // jump at the ends, as the series does).
-// Modes below 1e-15 of the largest, or below noiseFloor (the rounding of f's samples), are left
-// out: their noise would enter v-derivatives times (kω)^j.
-VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor = 0.0);
+// dropNoise (the modal method): modes below 1e-15 of the largest, or below noiseFloor (the
+// rounding of f's samples), are left out: their noise would enter v-derivatives times (kω)^j.
+// The Bloor-Wilson baselines keep every mode, as published.
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor = 0.0, bool dropNoise = false);
 
 // The degree-N Chebyshev interpolant of f on [v0, v1] as powers of s = (v - c) w in [-1, 1].
 VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N);

@@ -63,7 +63,7 @@ VExpansion endMatchedFourier(const VExpansion& f, double v0, double v1, int N, i
     const double v = v0 + (v1 - v0) * j / 256;
     scale = std::max({scale, std::abs(expansionValue(f, v)), std::abs(expansionValue(poly, v))});
   }
-  VExpansion out = fourierSeries(rest, v0, v1, N, 1e-15 * scale);
+  VExpansion out = fourierSeries(rest, v0, v1, N, 1e-15 * scale, true);
   out.insert(out.end(), poly.begin(), poly.end());
   return out;
 }

@@ -46,7 +46,7 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
           const VExpansion gen = generalPart(slot);
           if (gen.empty()) continue;
           slot = familyPart(slot);
-          const VExpansion approx = isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N)
+          const VExpansion approx = isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
                                     : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)
                                                                 : endMatchedFourier(gen, p.v0, p.v1, N, m);
           slot.insert(slot.end(), approx.begin(), approx.end());
