@@ -147,6 +147,7 @@ double checkTrimline(const EndReference& ref, const PrimarySurface& S, const Tri
   const bool curvature = ref.continuity == Continuity::Curvature;
   const Vec3Expr dP = {derivative(e.P[0], ExprVar::V), derivative(e.P[1], ExprVar::V), derivative(e.P[2], ExprVar::V)};
   std::vector<double> vs(kSamples), speed(kSamples), sine(kSamples);
+  std::vector<Eigen::Vector3d> Ts(kSamples);  // S_t at each sample, evaluated once
   double maxT = 0.0, sum = 0.0;
   const auto sineAt = [&](const Eigen::Vector3d& T, const Eigen::Vector3d& along) {
     // A trimline that stops (a pole) or has no finite tangent there has no direction to be parallel to.
@@ -161,11 +162,12 @@ double checkTrimline(const EndReference& ref, const PrimarySurface& S, const Tri
     if (!P.allFinite() || !std::isfinite(T.norm()) || (curvature && !eval3(e.C, v).allFinite()))
       fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + shortNumber(v));
     if (!std::isfinite(eval1(ref.power, v))) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + shortNumber(v));
+    Ts[k] = T;
     speed[k] = T.norm();
     maxT = std::max(maxT, speed[k]);
     sum += speed[k];
   }
-  for (int k = 0; k < kSamples; ++k) sine[k] = sineAt(eval3(e.T, vs[k]), eval3(dP, vs[k]));
+  for (int k = 0; k < kSamples; ++k) sine[k] = sineAt(Ts[k], eval3(dP, vs[k]));
   const auto speedAt = [&](double v) { return eval3(e.T, v).norm(); };
   minimaBelow(vs, speed, speedAt, 1e-9 * maxT, [&](double v) {
     fail(ErrorCode::InvalidField, at, "dS/dt of '" + ref.surface + "' vanishes on the trimline at v = " + shortNumber(v) + ": no direction across it");
