@@ -1,6 +1,7 @@
 #include "methods/boundary_lift.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 namespace pdesurf {
 
@@ -42,9 +43,18 @@ void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p) {
       const std::vector<VExpansion>& side = slot < n ? cp.left : cp.right;
       if (slot % n >= static_cast<int>(side.size())) continue;
       for (const VTerm& term : side[slot % n]) {
-        std::vector<double> q = h[slot];
-        for (double& x : q) x *= term.coef;
-        terms.push_back({term.g, UFactor::polynomial(q)});
+        ExpPoly piece;
+        for (double x : h[slot]) piece.poly.push_back(x * term.coef);
+        // A function the surface already has (a family term the approximate solve kept) takes
+        // the piece in its u-factor: no new term for tessellation to combine at every vertex.
+        auto same = std::find_if(terms.begin(), terms.end(), [&](const SeparableTerm& t) { return t.g == term.g && t.G.bernstein.empty(); });
+        if (same != terms.end()) {
+          same->G.pieces.push_back(std::move(piece));
+        } else {
+          UFactor G;
+          G.pieces.push_back(std::move(piece));
+          terms.push_back({term.g, std::move(G)});
+        }
       }
     }
   }
