@@ -80,12 +80,14 @@ void forceExpression(const json& j, const std::string& path, const Resolver& r, 
   if (sp.remainder) cp.generalForce.push_back({text, sp.remainder});
 }
 
-void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise, Expr* full) {
+Expr surfaceField(const json& j, const std::string& path, const Resolver& r) {
   std::string text;
   AllowedVariables vars{true, true};
   vars.uName = "t";
-  const Expr e = parseField(j, path, r, vars, &text);
-  if (full) *full = e;
+  return parseField(j, path, r, vars, &text);
+}
+
+void splitSurface(const Expr& e, std::vector<PrimaryTerm>& terms, Expr* pointwise) {
   const Split sp = splitExpression(e);
   for (const SplitTerm& t : sp.terms) terms.push_back({t.s, t.v, t.coef});
   *pointwise = sp.remainder;

@@ -21,8 +21,9 @@ VExpansion slotFromExpr(const Expr& e, const std::string& text);
 // An expression in u and v: (polynomial in u) × family terms, and a general force.
 void forceExpression(const json& j, const std::string& path, const Resolver& r, ComponentProblem& cp);
 
-// An expression in t and v for one coordinate of a primary surface.
-// `full`, when given, receives the whole expression.
-void surfaceExpression(const json& j, const std::string& path, const Resolver& r, std::vector<PrimaryTerm>& terms, Expr* pointwise, Expr* full = nullptr);
+// An expression in t and v for one coordinate of a primary surface, parsed; and split into
+// separable terms plus what does not separate.
+Expr surfaceField(const json& j, const std::string& path, const Resolver& r);
+void splitSurface(const Expr& e, std::vector<PrimaryTerm>& terms, Expr* pointwise);
 
 }  // namespace pdesurf::scene_json

@@ -8,6 +8,7 @@
 #include "bezier/bezier_solver.hpp"
 #include "scene/derived_ends.hpp"
 #include "scene/expression_fields.hpp"
+#include "scene/placement.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/json_read.hpp"
@@ -125,16 +126,22 @@ void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch
   }
 }
 
-// "surface" (version 2): per coordinate an expression in t and v.
-void parseSurface(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
+// "surface" (version 2): per coordinate an expression in t and v; version 4 may place it
+// (scene/placement.hpp), which rewrites the three expressions before they are split.
+void parseSurface(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
+  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets", "placement"});
   parseMeets(j, path, r, patch);
   primaryRanges(j, path, r, patch.primary);
+  std::array<Expr, 3> xyz;
+  for (int c = 0; c < 3; ++c)  // a missing coordinate is 0
+    xyz[c] = j.contains(kAxis[c]) ? surfaceField(j[kAxis[c]], path + "." + kAxis[c], r) : constant(0.0);
+  if (j.contains("placement")) {
+    if (version < 4) fail(ErrorCode::InvalidField, path + ".placement", "a placement needs scene version 4");
+    xyz = applyPlacement(parsePlacement(j["placement"], path + ".placement", r), xyz);
+  }
   for (int c = 0; c < 3; ++c) {
-    if (j.contains(kAxis[c]))
-      surfaceExpression(j[kAxis[c]], path + "." + kAxis[c], r, patch.primary.terms[c], &patch.primary.pointwise[c], &patch.primary.full[c]);
-    else
-      patch.primary.full[c] = constant(0.0);  // a missing coordinate is 0
+    patch.primary.full[c] = xyz[c];
+    splitSurface(xyz[c], patch.primary.terms[c], &patch.primary.pointwise[c]);
   }
 }
 
@@ -187,8 +194,8 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (!format.is_string() || format.get<std::string>() != "pdesurf-scene")
     fail(ErrorCode::InvalidField, "format", "expected \"pdesurf-scene\"");
   const json& version = require(doc, "version", "scene");
-  if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > 3)
-    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1, 2 and 3");
+  if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > 4)
+    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 to 4");
   allowOnly(doc, "scene", {"format", "version", "id", "title", "description", "source", "parameters", "patches"});
   Scene scene;
   scene.version = static_cast<int>(version.get<long long>());
@@ -236,7 +243,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
       }
     } else if (kind == "surface" && scene.version >= 2) {
       patch.kind = PatchKind::Primary;
-      parseSurface(pj, path, r, patch);
+      parseSurface(pj, path, r, scene.version, patch);
     } else {
       fail(ErrorCode::InvalidField, path + ".kind",
            "unknown kind '" + kind + "' (" + (scene.version >= 2 ? "pde, surface, bezier, ruled, separable" : "pde, ruled, separable") + ")");

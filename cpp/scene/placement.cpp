@@ -1,0 +1,86 @@
+#include "scene/placement.hpp"
+
+#include <cmath>
+
+#include "common/errors.hpp"
+
+namespace pdesurf::scene_json {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::array<double, 3> vector3(const json& j, const std::string& path, const Resolver& r) {
+  if (!j.is_array() || j.size() != 3) fail(ErrorCode::InvalidField, path, "expected an array of three numbers [x, y, z]");
+  return {r.number(j[0], path + "[0]"), r.number(j[1], path + "[1]"), r.number(j[2], path + "[2]")};
+}
+
+// cos and sin of a whole number of quarter turns are exact, so a surface turned by 90° keeps
+// exactly the terms it had (no 6e-17 multiples of the other coordinates).
+void cosSin(double degrees, double& c, double& s) {
+  const double quarters = degrees / 90.0;
+  if (quarters == std::round(quarters)) {
+    const long long q = static_cast<long long>(std::fmod(std::round(quarters), 4.0) + 4) % 4;
+    const double cs[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
+    c = cs[q], s = sn[q];
+    return;
+  }
+  c = std::cos(degrees * kPi / 180.0);
+  s = std::sin(degrees * kPi / 180.0);
+}
+
+}  // namespace
+
+Placement parsePlacement(const json& j, const std::string& path, const Resolver& r) {
+  if (!j.is_object()) fail(ErrorCode::InvalidField, path, "expected an object {translate, rotate, scale}");
+  allowOnly(j, path, {"translate", "rotate", "scale"});
+  Placement p;
+  if (j.contains("translate")) {
+    const auto t = vector3(j["translate"], path + ".translate", r);
+    p.translate = Eigen::Vector3d(t[0], t[1], t[2]);
+  }
+  Eigen::Vector3d scale(1, 1, 1);
+  if (j.contains("scale")) {
+    const std::string sp = path + ".scale";
+    if (j["scale"].is_array()) {
+      const auto s = vector3(j["scale"], sp, r);
+      scale = Eigen::Vector3d(s[0], s[1], s[2]);
+    } else {
+      scale.setConstant(r.number(j["scale"], sp));
+    }
+    for (int k = 0; k < 3; ++k)
+      if (scale[k] == 0.0) fail(ErrorCode::InvalidField, sp, "a scale of 0 flattens the surface");
+  }
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  if (j.contains("rotate")) {
+    const auto a = vector3(j["rotate"], path + ".rotate", r);
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(a[k]) > 1e6) fail(ErrorCode::InvalidField, path + ".rotate[" + std::to_string(k) + "]", "an angle beyond ±1e6 degrees");
+    double c[3], s[3];
+    for (int k = 0; k < 3; ++k) cosSin(a[k], c[k], s[k]);
+    Eigen::Matrix3d rx, ry, rz;
+    rx << 1, 0, 0, 0, c[0], -s[0], 0, s[0], c[0];
+    ry << c[1], 0, s[1], 0, 1, 0, -s[1], 0, c[1];
+    rz << c[2], -s[2], 0, s[2], c[2], 0, 0, 0, 1;
+    rotation = rx * ry * rz;
+  }
+  p.linear = rotation * scale.asDiagonal();
+  if (!p.linear.allFinite() || !p.translate.allFinite()) fail(ErrorCode::NonFinite, path, "the placement is not finite");
+  return p;
+}
+
+std::array<Expr, 3> applyPlacement(const Placement& p, const std::array<Expr, 3>& xyz) {
+  std::array<Expr, 3> out;
+  for (int c = 0; c < 3; ++c) {
+    Expr acc = constant(p.translate[c]);
+    for (int k = 0; k < 3; ++k) {
+      const double m = p.linear(c, k);
+      if (m == 0.0) continue;
+      acc = add(acc, m == 1.0 ? xyz[k] : multiply(constant(m), xyz[k]));
+    }
+    out[c] = acc;
+  }
+  return out;
+}
+
+}  // namespace pdesurf::scene_json
