@@ -209,7 +209,9 @@ static Scene parseSceneUnchecked(const std::string& text) {
   Resolver r;
   if (doc.contains("parameters")) parseParameters(doc["parameters"], scene, r, scene.version);
   const json& patches = require(doc, "patches", "scene");
-  if (!patches.is_array() || patches.empty()) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array");
+  // Version 4 is what the page builds from nothing: its first scene has no patch yet.
+  if (!patches.is_array()) fail(ErrorCode::InvalidField, "patches", "expected an array");
+  if (patches.empty() && scene.version < 4) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array (an empty scene needs version 4)");
   if (patches.size() > limits::kPatches) fail(ErrorCode::TooLarge, "patches", "more than " + std::to_string(limits::kPatches) + " patches");
   std::set<std::string> names;
   size_t assemblyWork = 0;  // over the Bezier patches so far

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "analysis/join_certificate.hpp"
 #include "common/errors.hpp"
 #include "ode/even_ode.hpp"
+#include "methods/method.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 #include "test_util.hpp"
@@ -195,4 +197,13 @@ TEST_CASE("version-2 expressions: a corpus of good ones solves") {
     CAPTURE(text);
     CHECK(outcomeOf(j) == "ok");
   }
+}
+
+TEST_CASE("scene: version 4 may be empty (the page's new scene); older versions may not") {
+  const Scene empty = parseScene(R"({"format": "pdesurf-scene", "version": 4, "patches": []})");
+  CHECK(empty.patches.empty());
+  CHECK(solveScene(empty).empty());
+  CHECK(checkScene(empty, {}, 64).ok);
+  CHECK_THROWS_WITH(parseScene(R"({"format": "pdesurf-scene", "version": 3, "patches": []})"),
+                    "patches: expected a non-empty array (an empty scene needs version 4)");
 }
