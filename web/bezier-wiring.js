@@ -6,7 +6,7 @@ import { AXES, controlPointEntry } from './state/control-net-edit.js';
 
 /**
  * Created before the viewer and the panel (they take its handlers); connect() them
- * once they exist: { state, viewer, panel, scheduler, status }.
+ * once they exist: { state, viewer, panel, doc, status }.
  */
 export function createBezierWiring() {
   let ctx = null;
@@ -24,17 +24,8 @@ export function createBezierWiring() {
     });
   }
 
-  // Every edit: write the scene, then one coalesced re-solve (the solver reports bad values).
-  function edit(write) {
-    try {
-      write();
-    } catch (err) {
-      ctx.status.error(err.message);
-      return false;
-    }
-    ctx.scheduler.request();
-    return true;
-  }
+  // Every edit goes through the document's door: it re-solves (the solver reports bad values).
+  const edit = (write) => ctx.doc.apply({ name: 'edit the control net', run: write }).ok;
 
   const viewerHandlers = {
     pointOf,

@@ -4,7 +4,9 @@
 import { createSolverClient } from './solver/solver-client.js';
 import { gridTopology } from './viewer/grid-topology.js';
 import { createViewer } from './viewer/viewer.js';
-import { createPanel } from './ui/panel.js';
+import { createPanelWiring } from './panel-wiring.js';
+import { createDocument } from './state/document.js';
+import { subscribeToEdits } from './edit-subscribers.js';
 import { createGallery } from './ui/gallery.js';
 import { createStatus } from './ui/status.js';
 import { createToolbar } from './ui/toolbar.js';
@@ -23,8 +25,7 @@ import { createShareWiring } from './share-wiring.js';
 import { createAnalysisWiring } from './analysis-wiring.js';
 import { createFileWiring } from './file-wiring.js';
 import { createHistoryWiring } from './history-wiring.js';
-
-const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
+import { createBuildWiring } from './build-wiring.js';
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
@@ -90,6 +91,7 @@ async function start() {
   let sceneToken = 0; // a new scene (example or link): results for an older one are dropped
 
   const state = createSceneState();
+  hooks.sceneText = () => state.text();
   const scheduler = createSolveScheduler(solveNow);
   let fitPending = false; // frame the camera on the first good solve of an example
   let cameraPending = null; // or restore a shared link's camera instead
@@ -97,88 +99,12 @@ async function start() {
   let opening = false; // the next solve opens a scene (not a user's change)
   let notice = null; // shown instead of the solve summary once (e.g. a bad link)
   let loadToken = 0; // a slower fetch or decode of an earlier pick must not win
-  let typingTimer = 0;
 
   const gallery = createGallery(document.getElementById('gallery'), examples, (id) => openExample(id), layout);
-  const panel = createPanel({
-    grid: state.grid,
-    onGridChange: () => scheduler.request(),
-    onShare: () => share.copy(),
-    parameterHandlers: {
-      onChange: () => scheduler.request(),
-      onAdd: (name, value) => {
-        try {
-          state.addParameter(name, value);
-        } catch (err) {
-          status.error(`cannot add the parameter: ${err.message}`);
-          return;
-        }
-        panel.refreshParameters();
-        scheduler.request();
-      },
-      // Allowed even while an expression uses it: the solver's error then says where.
-      onRemove: (name) => {
-        state.removeParameter(name);
-        panel.refreshParameters();
-        scheduler.request();
-      },
-    },
-    operatorHandlers: {
-      methodOf: (patch) => state.methodOf(patch),
-      onParam: (patch, axis, name, value) => {
-        state.setOperatorParam(patch, axis, name, value);
-        scheduler.request();
-      },
-      onOrder: (patch, axis, order) => {
-        const params = state.setOperatorOrder(patch, axis, order);
-        if (params) {
-          panel.setOrder(patch, axis, order);
-          scheduler.request();
-        }
-        return params;
-      },
-      onMethod: (patch, method) => {
-        state.setMethod(patch, method);
-        scheduler.request();
-      },
-    },
-    bezierHandlers: bezier.panelHandlers,
-    endHandlers: {
-      onField: (patch, end, key, value, typed) => {
-        try {
-          state.setEndField(patch, end, key, value); // a continuity may raise the orders
-        } catch (err) {
-          status.error(`cannot change the end: ${err.message}`);
-          return;
-        }
-        if (typed) solveAfterTyping();
-        else scheduler.request();
-      },
-      onAttach: (patch, end) => endChange(() => state.attachEnd(patch, end), 'attach'),
-      onDetach: (patch, end, derived) => endChange(() => state.detachEnd(patch, end, derived), 'detach'),
-    },
-    onExpression: (patch, field, text) => {
-      state.setExpression(patch, field, text);
-      solveAfterTyping();
-    },
-  });
-
-  function solveAfterTyping() {
-    clearTimeout(typingTimer);
-    typingTimer = setTimeout(() => scheduler.request(), EXPRESSION_DEBOUNCE_MS);
-  }
-
-  // Attach or detach: the end and the blend's function fields change shape, then re-solve.
-  function endChange(change, what) {
-    try {
-      change();
-    } catch (err) {
-      status.error(`cannot ${what} the end: ${err.message}`);
-      return;
-    }
-    panel.rebuildEnds();
-    scheduler.request();
-  }
+  const doc = createDocument(state);
+  let share = null;
+  const panel = createPanelWiring({ doc, share: () => share, bezier });
+  subscribeToEdits(doc, { panel, status, scheduler });
 
   watchNumberControls(panel.gui);
   // At small sizes the panel is a sheet: its title bar closes it rather than folding it.
@@ -195,10 +121,14 @@ async function start() {
   addToolbarButtons();
   installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
-  bezier.connect({ state, viewer, panel, scheduler, status });
-  const share = createShareWiring({ viewer, panel, status, hooks });
+  bezier.connect({ state, viewer, panel, doc, status });
+  share = createShareWiring({ viewer, panel, status, hooks });
   const files = createFileWiring({ panel, viewer, state, status, hooks, showScene,
     currentTitle: () => titleEl.textContent, setNotice: (text) => { notice = text; } });
+  const building = createBuildWiring({ doc, panel, viewer, hooks, openBuilt: (scene, title) => {
+    showScene(scene, { title });
+    opening = false; // a built scene is the user's: its link is written at its first solve
+  } });
   let quiet = false; // the next solve only adds analysis data: not a user's edit
   analysis = createAnalysisWiring({
     panel, viewer, hasAnalysis: true,
@@ -219,6 +149,7 @@ async function start() {
     titleEl.textContent = title;
     cameraPending = camera;
     fitPending = !camera;
+    building.sceneShown();
   }
 
   // Shared by examples and links: the scene becomes the page state and is solved.
@@ -227,6 +158,7 @@ async function start() {
     share.opening();
     opening = true;
     state.setScene(scene, exampleId);
+    doc.reset();
     hooks.exampleId = exampleId;
     presentScene(scene, exampleId, title, camera);
     scheduler.request();
@@ -245,11 +177,14 @@ async function start() {
     opening = linkPending = fitPending = false;
     cameraPending = null;
     state.setScene(scene, exampleId);
+    doc.reset();
     Object.assign(state.grid, grid);
     panel.refreshGrid();
     hooks.exampleId = exampleId;
-    if (sameScene) panel.restoreScene(scene); // overlays and the edited point stay
-    else presentScene(scene, exampleId, title, camera);
+    if (sameScene) {
+      panel.restoreScene(scene); // overlays and the edited point stay
+      building.sceneShown();
+    } else presentScene(scene, exampleId, title, camera);
     scheduler.request();
   }
 
@@ -344,6 +279,7 @@ async function start() {
 
   applyFailure = (err, job) => {
     hooks.solveCount++;
+    if (doc.solved(false, err)) return; // a checked edit (a picked blend) is undone and says why
     if (files.failed(err, job)) return; // an opened file's scene: the previous one comes back
     if (linkPending) {
       // The link decoded but its scene does not solve: nothing good to keep on screen.
@@ -365,9 +301,11 @@ async function start() {
       p.indices = topology.indices;
     }
     linkPending = false;
+    doc.solved(true);
     undoRedo.solved();
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
+    building.drawn(result.patches);
     analysis.solved(result, job.options);
     state.noteSolved(result.patches);
     if (cameraPending) viewer.setCamera(cameraPending);

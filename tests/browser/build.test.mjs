@@ -1,0 +1,216 @@
+// Building a model from nothing in the page (web/build-wiring.js): a new empty scene, surfaces
+// from the library, placed, blended by picking two borders in the view (1280×800) or by the
+// panel's choices only (390×844), undone back to empty and redone; the link decodes in the
+// CLI to that scene and `pdesurf check` passes; a sphere filleted into a plane follows a
+// moved sphere and stays G1; a hole filled by picking four borders; deleting a surface a
+// blend names, both answers; bad names and picks are named and change nothing.
+// Screenshots: build/browser/build-*.png.
+//   PDESURF_WASM_DIR=build/wasm PDESURF_CLI=build/native/pdesurf node --test tests/browser/build.test.mjs
+import { describe, it, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
+
+const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
+
+const scene = (page) => page.evaluate(() => JSON.parse(window.__pdesurf.sceneText()));
+const names = async (page) => (await scene(page)).patches.map((p) => p.name);
+const history = (page) => page.evaluate(() => window.__pdesurf.history());
+
+/** Screen point of the middle vertex of border t0 (i = 0) or t1 (i = nu) of a drawn surface. */
+function borderMid(page, patch, border) {
+  return page.evaluate(([patch, border]) => {
+    const h = window.__pdesurf;
+    const { nu, nv } = h.lastSolve;
+    const i = border === 't0' ? 0 : nu;
+    return h.vertexScreen(patch, Math.round(nv / 2) * (nu + 1) + i);
+  }, [patch, border]);
+}
+
+async function clickBorder(page, patch, border) {
+  const p = await borderMid(page, patch, border);
+  await page.mouse.move(p.x - 20, p.y - 20);
+  await page.mouse.move(p.x, p.y, { steps: 3 });
+  const st = await page.evaluate(() => window.__pdesurf.modeller().borders.state());
+  assert.deepEqual(st.hovered, { patch, border }, `hover over ${patch} ${border}`);
+  await page.mouse.click(p.x, p.y);
+}
+
+// An edit that solves: run it and wait for the solve.
+async function solving(page, action) {
+  const n = (await hooks(page)).solveCount;
+  await action();
+  return solvedAfter(page, n);
+}
+
+const control = (page, key) => page.locator(`#panel [data-build="${key}"]`);
+const button = (page, name) => page.locator('#panel .build-folder button', { hasText: name }).first();
+
+async function addSurface(page, label) {
+  await control(page, 'kind').locator('select').selectOption({ label });
+  return solving(page, () => button(page, 'add surface').click());
+}
+
+// The link in the address bar, decoded by the CLI and checked there.
+function checkLink(url) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-build-'));
+  const decoded = spawnSync(CLI, ['decode-link', url], { encoding: 'utf8' });
+  assert.equal(decoded.status, 0, decoded.stderr);
+  const file = path.join(dir, 'scene.json');
+  fs.writeFileSync(file, decoded.stdout);
+  const checked = spawnSync(CLI, ['check', file, '--json'], { encoding: 'utf8' });
+  fs.rmSync(dir, { recursive: true, force: true });
+  assert.equal(checked.status, 0, checked.stdout + checked.stderr);
+  return { scene: JSON.parse(decoded.stdout), report: JSON.parse(checked.stdout) };
+}
+
+async function waitLink(page) {
+  await page.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 10_000 });
+  await page.waitForTimeout(400); // the hash sync settles
+  return page.evaluate(() => location.href);
+}
+
+describe('building a model in the page', { skip }, () => {
+  let h;
+  before(async () => {
+    assert.ok(fs.existsSync(CLI), `no CLI at ${CLI}`);
+    h = await startHarness();
+  });
+  after(async () => {
+    await h?.close();
+  });
+
+  it('1280×800: from an empty scene, a plane and a cylinder, placed, blended G2 by picking; the link checks in the CLI', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    await solving(page, () => button(page, 'new empty scene').click());
+    assert.deepEqual(await names(page), []);
+    assert.equal((await hooks(page)).lastError, null);
+    await addSurface(page, 'plane disc / annulus');
+    await addSurface(page, 'cylinder');
+    assert.deepEqual(await names(page), ['annulus1', 'cylinder1']);
+    // Placed by numbers in its folder: up by 0.5.
+    await page.locator('#panel [data-patch="cylinder1"] [data-action="select"]').click(); // selected already: stays
+    const z = page.locator('#panel [data-placement="z"] input');
+    await solving(page, async () => {
+      await z.fill('0.5');
+      await z.press('Enter');
+    });
+    assert.deepEqual((await scene(page)).patches[1].placement.translate, [0, 0, 0.5]);
+    // Curvature continuity, then two borders picked in the view.
+    await control(page, 'blend-continuity').locator('select').selectOption({ label: 'curvature (G2)' });
+    await control(page, 'blend-pick').locator('input').check();
+    await clickBorder(page, 'annulus1', 't0');
+    const before = await hooks(page);
+    await page.waitForTimeout(200);
+    assert.equal((await hooks(page)).solveCount, before.solveCount, 'one pick does not solve');
+    await solving(page, () => clickBorder(page, 'cylinder1', 't0'));
+    const built = await scene(page);
+    assert.deepEqual(built.patches.map((p) => p.name), ['annulus1', 'cylinder1', 'blend1']);
+    assert.deepEqual(built.patches[2].ends.u0, { surface: 'annulus1', at: 't0', continuity: 'curvature', power: 1 });
+    assert.equal((await hooks(page)).lastError, null);
+    await shoot(page, 'build-picked-1280.png');
+    const { scene: linked, report } = checkLink(await waitLink(page));
+    assert.deepEqual(linked.patches.map((p) => p.name), ['annulus1', 'cylinder1', 'blend1']);
+    assert.equal(report.ok, true);
+    const levels = report.joins.map((j) => j.promised ?? j.level);
+    assert.equal(report.joins.length, 2, JSON.stringify(report.joins));
+    assert.ok(report.joins.every((j) => j.ok), JSON.stringify(report.joins));
+    assert.ok(levels.every((l) => l === 'G2' || l === 2), JSON.stringify(levels));
+    await page.close();
+  });
+
+  it('390×844: the same through the panel only, then undo back to empty and redo', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet', { viewport: { width: 390, height: 844 } });
+    await page.locator('#toolbar [data-action="panel"]').click();
+    await solving(page, () => button(page, 'new empty scene').click());
+    const base = (await history(page)).depth;
+    await addSurface(page, 'plane disc / annulus');
+    await addSurface(page, 'cylinder');
+    await control(page, 'blend-a').locator('select').selectOption({ label: 'annulus1 · t0' });
+    await control(page, 'blend-b').locator('select').selectOption({ label: 'cylinder1 · t0' });
+    await solving(page, () => button(page, 'make the blend').click());
+    assert.deepEqual(await names(page), ['annulus1', 'cylinder1', 'blend1']);
+    const addButton = await button(page, 'add surface').boundingBox();
+    assert.ok(addButton.height >= 32, `touch target ${addButton.height} px`);
+    await page.locator('#panel .outliner').scrollIntoViewIfNeeded();
+    await shoot(page, 'build-panel-390.png');
+    await page.waitForTimeout(500); // the last step rests
+    assert.equal((await history(page)).depth, base + 3, 'one undo step per edit');
+    for (const expected of [['annulus1', 'cylinder1'], ['annulus1'], []]) {
+      await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
+      assert.deepEqual(await names(page), expected);
+    }
+    for (const expected of [['annulus1'], ['annulus1', 'cylinder1'], ['annulus1', 'cylinder1', 'blend1']]) {
+      await solving(page, () => page.locator('#toolbar [data-action="redo"]').click());
+      assert.deepEqual(await names(page), expected);
+    }
+    await page.close();
+  });
+
+  it('a sphere filleted into a plane follows the moved sphere and stays G1', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    await page.locator('#panel [data-patch="sphere"] [data-action="select"]').click();
+    for (const [key, value] of [['x', '0.3'], ['rx', '10']]) {
+      const input = page.locator(`#panel [data-placement="${key}"] input`).first();
+      await solving(page, async () => {
+        await input.fill(value);
+        await input.press('Enter');
+      });
+    }
+    const s = await scene(page);
+    assert.equal(s.version, 4);
+    assert.deepEqual(s.patches[2].placement, { translate: [0.3, 0, 0], rotate: [10, 0, 0], scale: 1 });
+    const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
+    assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
+    await shoot(page, 'build-moved-sphere-1280.png');
+    await page.close();
+  });
+
+  it('deleting a surface a blend names asks, and both answers work; undo restores', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    const del = page.locator('#panel [data-patch="sphere"] [data-action="delete"]');
+    await del.click();
+    await page.locator('#panel .outliner-ask').waitFor();
+    await solving(page, () => page.locator('#panel [data-action="delete-dependents"]').click());
+    assert.deepEqual(await names(page), ['plane']);
+    await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
+    assert.deepEqual(await names(page), ['fillet', 'plane', 'sphere']);
+    await del.click();
+    await solving(page, () => page.locator('#panel [data-action="detach-dependents"]').click());
+    const s = await scene(page);
+    assert.deepEqual(s.patches.map((p) => p.name), ['fillet', 'plane']);
+    assert.equal(s.patches[0].ends.u1, undefined);
+    assert.ok(s.patches[0].boundary, 'the detached end is typed');
+    assert.equal((await hooks(page)).lastError, null);
+    await page.close();
+  });
+
+  it('bad input: markup names stay text, duplicates are refused by name, a same-border pick adds nothing', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    const name = page.locator('#panel [data-patch="plane"] input[type="text"]');
+    const bold = await page.locator('#panel b').count();
+    await solving(page, async () => {
+      await name.fill('<b>flat</b>');
+      await name.press('Enter');
+    });
+    assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    assert.equal(await page.locator('#panel b').count(), bold, 'a name never becomes markup');
+    await control(page, 'blend-a').locator('select').selectOption({ label: '<b>flat</b> · t0' });
+    const renamed = page.locator('#panel [data-patch="<b>flat</b>"] input[type="text"]');
+    await renamed.fill('sphere');
+    await renamed.press('Enter');
+    await page.waitForTimeout(200);
+    assert.match(await page.locator('#panel .build-message').textContent(), /sphere/);
+    assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    await control(page, 'blend-a').locator('select').selectOption({ label: 'sphere · t1' });
+    await control(page, 'blend-b').locator('select').selectOption({ label: 'sphere · t1' });
+    await button(page, 'make the blend').click();
+    await page.waitForTimeout(200);
+    assert.match(await page.locator('#panel .build-message').textContent(), /^cannot blend: /);
+    assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    await page.close();
+  });
+});

@@ -1,0 +1,186 @@
+// Building a model in the page: the Build folder (new scene, Add, blend two borders, fill a
+// loop), the Model outliner, the selected surface's placement (numbers and the view's gizmo)
+// and picking borders in the view. Every change is one edit through the document's door
+// (web/state/document.js), which re-solves, records the undo step and updates the link;
+// this module only subscribes to the door and turns the user's asks into edits.
+import { buildBuildFolder } from './ui/build-controls.js';
+import { buildOutliner } from './ui/outliner.js';
+import { buildPlacementFolder } from './ui/placement-controls.js';
+import { addSurface, libraryEntry } from './state/surface-library.js';
+import { addBlend, addFill } from './state/scene-join.js';
+import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
+import { previewMesh, clearPreview, pivotOf } from './viewer/placement-gizmo.js';
+
+const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
+
+/** { doc, panel, viewer, status, hooks, openBuilt(scene, title) } */
+export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
+  const { state } = doc;
+  let drawn = []; // the last good solve's patches
+  let pickMode = null; // 'blend' | 'fill' | null
+  let gizmoMode = null; // 'translate' | 'rotate' | 'scale' | null
+  let placement = null; // the selected surface's placement folder
+  const hidden = new Set();
+
+  // Building edits: one undo step each; the answer shows beside the choices.
+  function build(name, run, more = {}) {
+    const r = doc.apply({ name, run, structure: true, build: true, ...more });
+    if (r.ok) folder.say(typeof more.said === 'function' ? more.said(r.result) : '');
+    return r;
+  }
+
+  const folder = buildBuildFolder(panel.gui, {
+    onNew: () => {
+      doc.select(null);
+      openBuilt(newScene(), 'untitled scene');
+    },
+    onAdd: (kind) => {
+      const r = build(`add a ${libraryEntry(kind)?.label ?? kind}`, (s) => addSurface(s.scene, kind), { said: (n) => `added ${n}` });
+      if (r.ok) doc.select(r.result);
+    },
+    onBlend: (a, b, options) => makeBlend(a, b, options),
+    onFill: (borders) => makeFill(borders),
+    onPickMode: (kind) => setPickMode(kind),
+  });
+
+  const outliner = buildOutliner(panel.gui, {
+    onSelect: (name) => doc.select(name),
+    onRename: (old, next) => {
+      const r = build('rename', (s) => renamePatch(s.scene, old, next));
+      if (r.ok && doc.selection() === old) doc.select(next);
+      if (!r.ok) refresh(); // the name field shows the old name again
+    },
+    onVisible: (name, on) => {
+      if (on) hidden.delete(name);
+      else hidden.add(name);
+      viewer.setPatchVisible(name, on);
+    },
+    onDuplicate: (name) => {
+      const r = build('duplicate', (s) => duplicatePatch(s.scene, name), { said: (n) => `${name} duplicated as ${n}` });
+      if (r.ok) doc.select(r.result);
+    },
+    onDelete: (name, dependents) => {
+      if (doc.selection() === name) doc.select(null);
+      build('delete', (s) => deletePatch(s.scene, name, { dependents, solved: drawn }));
+    },
+    onRemoveParameter: (name) => build('remove the parameter', (s) => removeParameter(s.scene, name)),
+  });
+  panel.keepAfterShare(folder.folder.domElement, outliner.folder.domElement);
+
+  function makeBlend(a, b, options) {
+    const r = build('blend', (s) => addBlend(s.scene, a, b, options), {
+      checked: true, // the solver judges what the page cannot (a border where ∂S/∂t vanishes)
+      said: (n) => `${n}: ${a.surface} ${a.at} to ${b.surface} ${b.at}`,
+    });
+    folder.clearChoices();
+    viewer.borders.highlight([]);
+    if (r.ok) doc.select(r.result);
+  }
+
+  function makeFill(borders) {
+    const list = viewer.borders.list();
+    const endpoints = borders.map((b) => list.find((d) => d.patch === b.surface && d.border === b.at)?.endpoints);
+    const r = build('fill', (s) => {
+      if (endpoints.some((e) => !e)) throw new Error('a border that is not drawn yet cannot be filled: wait for the solve');
+      return addFill(s.scene, borders, endpoints);
+    }, { checked: true, said: (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}` });
+    folder.clearChoices();
+    viewer.borders.highlight([]);
+    if (r.ok) doc.select(r.result);
+  }
+
+  // Picking in the view: hovering only draws (never a solve); each click fills the next choice.
+  function setPickMode(kind) {
+    pickMode = kind;
+    if (!kind) {
+      viewer.borders.disable();
+      viewer.borders.highlight([]);
+      return;
+    }
+    viewer.borders.enable({
+      onPick: (pick) => {
+        const border = { surface: pick.patch, at: pick.border };
+        const chosen = folder.picked(pickMode, border);
+        viewer.borders.highlight(chosen.map((c) => ({ patch: c.surface, border: c.at })));
+        if (pickMode === 'blend' && chosen.length === 2) makeBlend(chosen[0], chosen[1], folder.blendOptions());
+        if (pickMode === 'fill' && chosen.length === 4) makeFill(chosen);
+      },
+    });
+  }
+
+  function showPlacementOf(name) {
+    placement?.destroy();
+    placement = null;
+    viewer.placement.detach();
+    const patch = surfacesOf(state.scene).find((p) => p.name === name);
+    if (!patch) return;
+    placement = buildPlacementFolder(panel.gui, name, patch.placement, {
+      onPlacement: (n, p) => build('place', (s) => setPlacement(s.scene, n, p), { structure: false }),
+      onMode: (mode) => {
+        gizmoMode = mode;
+        attachGizmo(name);
+      },
+    }, gizmoMode ?? 'off');
+    panel.gui.$children.insertBefore(placement.folder.domElement, outliner.folder.domElement.nextSibling);
+    attachGizmo(name);
+  }
+
+  // The gizmo previews the drawn mesh while dragging; the release is one edit (one solve).
+  function attachGizmo(name) {
+    viewer.placement.detach();
+    const patch = surfacesOf(state.scene).find((p) => p.name === name);
+    const mesh = viewer.meshOf(name);
+    if (!gizmoMode || !patch || !mesh) return;
+    const before = patch.placement || null;
+    viewer.placement.setMode(gizmoMode);
+    viewer.placement.attach(name, before, pivotOf(mesh), {
+      onDrag: (now) => {
+        previewMesh(mesh, before, now);
+        viewer.render?.();
+      },
+      onCommit: (now) => {
+        clearPreview(mesh);
+        build('place', (s) => setPlacement(s.scene, name, now), { structure: false });
+      },
+    });
+  }
+
+  function refresh() {
+    const scene = state.scene;
+    const surfaces = surfacesOf(scene);
+    folder.setBorders(surfaces.flatMap((p) => [{ surface: p.name, at: 't0' }, { surface: p.name, at: 't1' }]));
+    outliner.show((scene?.patches || []).filter(Boolean), (n) => dependentsOf(scene, n).map((d) => d.patch), unusedParameters(scene));
+    outliner.select(doc.selection());
+  }
+
+  doc.on('changed', (edit) => {
+    if (edit.structure) refresh();
+    if (edit.name === 'place' || edit.structure) placement?.update(surfacesOf(state.scene).find((p) => p.name === doc.selection())?.placement);
+  });
+  doc.on('reverted', () => refresh());
+  doc.on('refused', (err, edit) => {
+    if (edit.build) folder.say(`cannot ${edit.name}: ${err && err.message ? err.message : err}`, true);
+  });
+  doc.on('selection', (name) => {
+    outliner.select(name);
+    viewer.select(name);
+    showPlacementOf(name);
+  });
+
+  hooks.build = () => ({ pickMode, gizmoMode, selection: doc.selection(), hidden: [...hidden] });
+
+  return {
+    /** Another scene is on screen (opened, undone, redone): lists follow it. */
+    sceneShown() {
+      hidden.clear();
+      refresh();
+      showPlacementOf(doc.selection());
+    },
+    /** A good solve was drawn: borders and the gizmo's mesh are the new ones. */
+    drawn(patches) {
+      drawn = patches;
+      for (const name of hidden) viewer.setPatchVisible(name, false);
+      if (doc.selection() && gizmoMode) attachGizmo(doc.selection());
+    },
+  };
+}

@@ -1,0 +1,90 @@
+// The page's one door for changes: every edit of the scene (a slider, a typed field, adding a
+// surface, picking two borders, moving a surface, deleting) and of the selection goes through
+// apply() or select(). The door runs the edit, puts the scene back if it throws, and signals
+// the result; the solve scheduler, the undo history, the link, the panel and the outliner
+// subscribe (web/main.js composes them) instead of each handler calling them on its own.
+//
+// An edit: {
+//   name:      what it does, for messages ("add a cylinder")
+//   run(state) -> result     changes the scene (web/state/scene-state.js); throws to refuse
+//   solve:     'now' (default) | 'typed' (after the keys pause) | 'none'
+//   structure: true when patches or parameters are added, removed or renamed (the panel's
+//              scene folders and the outliner are rebuilt)
+//   checked:   true when the solver is the judge (a blend picked from two borders): if the
+//              next solve fails, the scene goes back to what it was and the error is
+//              reported as this edit's refusal
+// }
+// Signals: 'changed' (edit, result), 'refused' (error, edit), 'selection' (name | null),
+// 'reverted' (edit) after a checked edit the solver refused.
+
+export function createDocument(state) {
+  const subscribers = new Map();
+  let selection = null;
+  let pendingCheck = null; // { edit, before } until the next solve says yes or no
+
+  function emit(signal, ...args) {
+    for (const fn of subscribers.get(signal) || []) fn(...args);
+  }
+
+  // In place: the panel and the wiring hold the scene object itself.
+  function restore(text) {
+    const scene = state.scene;
+    for (const key of Object.keys(scene)) delete scene[key];
+    Object.assign(scene, JSON.parse(text));
+  }
+
+  const doc = {
+    state,
+
+    /** Subscribe to a signal; returns the unsubscribe function. */
+    on(signal, fn) {
+      if (!subscribers.has(signal)) subscribers.set(signal, new Set());
+      subscribers.get(signal).add(fn);
+      return () => subscribers.get(signal).delete(fn);
+    },
+
+    /** Run an edit through the door: { ok, result } or { ok: false, error }. */
+    apply(edit) {
+      if (!state.scene) return { ok: false, error: new Error('no scene is open') };
+      const before = JSON.stringify(state.scene);
+      let result;
+      try {
+        result = edit.run ? edit.run(state) : undefined;
+      } catch (error) {
+        restore(before);
+        emit('refused', error, edit);
+        return { ok: false, error };
+      }
+      if (edit.checked) pendingCheck = { edit, before };
+      emit('changed', edit, result);
+      return { ok: true, result };
+    },
+
+    /** The solver's verdict on the scene as it now is (main.js calls it after every solve). */
+    solved(ok, error) {
+      const check = pendingCheck;
+      pendingCheck = null;
+      if (ok || !check) return false;
+      restore(check.before);
+      emit('refused', error, check.edit);
+      emit('reverted', check.edit);
+      return true;
+    },
+
+    /** Another scene opened (or an undo put one back): no edit is pending any more. */
+    reset() {
+      pendingCheck = null;
+      doc.select(null);
+    },
+
+    /** The selected patch (the outliner's row, the view's highlight, its placement folder). */
+    select(name) {
+      if (name === selection) return;
+      selection = name;
+      emit('selection', name);
+    },
+
+    selection: () => selection,
+  };
+  return doc;
+}

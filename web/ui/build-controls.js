@@ -1,0 +1,138 @@
+// The panel's "Build" folder: a new scene, the Add menu (the surface library), a blend
+// between two borders and a fill of a loop of four — each as choices (keyboard and touch)
+// or picked in the view. It only reports what the user asked; web/build-wiring.js makes the
+// edits through the document's door. Every text shown comes from the scene or the solver
+// and is set as text, never as markup.
+import { SURFACE_LIBRARY } from '../state/surface-library.js';
+import { escapeHtml } from './html-text.js';
+
+const CONTINUITIES = { 'position (G0)': 'position', 'tangency (G1)': 'tangency', 'curvature (G2)': 'curvature' };
+export const NONE = '—';
+
+const borderLabel = (b) => `${b.surface} · ${b.at}`;
+// lil-gui writes option names as markup: a name from the scene is escaped to show as text.
+const asOptions = (labels) => Object.fromEntries(labels.map((l) => [escapeHtml(l), l]));
+
+/**
+ * handlers: { onNew(), onAdd(kindId), onBlend(a, b, options), onFill(borders[4]),
+ *   onPickMode(kind: 'blend' | 'fill' | null) }; borders are { surface, at }.
+ */
+export function buildBuildFolder(gui, handlers) {
+  const folder = gui.addFolder('Build');
+  folder.domElement.classList.add('build-folder');
+  const add = { kind: SURFACE_LIBRARY[0].id };
+  const labels = Object.fromEntries(SURFACE_LIBRARY.map((e) => [escapeHtml(e.label), e.id]));
+  folder.add({ new: () => handlers.onNew() }, 'new').name('new empty scene');
+  const addRow = folder.add(add, 'kind', labels).name('surface');
+  addRow.domElement.dataset.build = 'kind';
+  folder.add({ add: () => handlers.onAdd(add.kind) }, 'add').name('+ add surface');
+
+  const draft = { a: NONE, b: NONE, continuity: 'tangency', power: 1, pick: false };
+  const fillDraft = { b0: NONE, b1: NONE, b2: NONE, b3: NONE, pick: false };
+  let choices = [NONE];
+  let byLabel = new Map();
+  let blend = null;
+  let fill = null;
+
+  // Rebuilt whenever the borders on offer change (lil-gui's options() would move the row).
+  function buildChoices() {
+    const wasOpen = [blend ? !blend._closed : true, fill ? !fill._closed : false];
+    blend?.destroy();
+    fill?.destroy();
+    blend = folder.addFolder('Blend two borders');
+    blend.add(draft, 'a', asOptions(choices)).name('from').domElement.dataset.build = 'blend-a';
+    blend.add(draft, 'b', asOptions(choices)).name('to').domElement.dataset.build = 'blend-b';
+    blend.add(draft, 'continuity', CONTINUITIES).name('continuity').domElement.dataset.build = 'blend-continuity';
+    blend.add(draft, 'power', 0.1, 4, 0.01).name('power');
+    blend.add(draft, 'pick').name('pick in the view').onChange((on) => setPick(on ? 'blend' : null)).domElement.dataset.build = 'blend-pick';
+    blend.add({ make: () => makeBlend() }, 'make').name('make the blend').domElement.dataset.build = 'blend-make';
+    fill = folder.addFolder('Fill a loop of four borders');
+    ['b0', 'b1', 'b2', 'b3'].forEach((k, i) => {
+      fill.add(fillDraft, k, asOptions(choices)).name(`border ${i + 1}`).domElement.dataset.build = `fill-${i}`;
+    });
+    fill.add(fillDraft, 'pick').name('pick in the view').onChange((on) => setPick(on ? 'fill' : null)).domElement.dataset.build = 'fill-pick';
+    fill.add({ make: () => makeFill() }, 'make').name('fill the loop').domElement.dataset.build = 'fill-make';
+    if (!wasOpen[0]) blend.close();
+    if (!wasOpen[1]) fill.close();
+    folder.$children.append(message); // the answer stays last
+  }
+
+  // The answer to the last build request: the core's named error, or what was made.
+  const message = document.createElement('div');
+  message.className = 'build-message';
+  message.setAttribute('role', 'status');
+  folder.$children.append(message);
+  buildChoices();
+
+  function setPick(kind) {
+    draft.pick = kind === 'blend';
+    fillDraft.pick = kind === 'fill';
+    refresh();
+    handlers.onPickMode(kind);
+  }
+
+  const chosen = (label) => (label === NONE ? null : byLabel.get(label));
+
+  function makeBlend() {
+    const a = chosen(draft.a), b = chosen(draft.b);
+    if (!a || !b) return say('choose the two borders to blend (or pick them in the view)', true);
+    handlers.onBlend(a, b, { continuity: draft.continuity, power: draft.power });
+  }
+
+  function makeFill() {
+    const borders = ['b0', 'b1', 'b2', 'b3'].map((k) => chosen(fillDraft[k]));
+    if (borders.some((b) => !b)) return say('choose the four borders around the hole (or pick them in the view)', true);
+    handlers.onFill(borders);
+  }
+
+  function say(text, error = false) {
+    message.textContent = text;
+    message.classList.toggle('error', error);
+  }
+
+  return {
+    folder,
+    say,
+    setPick,
+    /** The scene's surface borders, offered by every border choice. */
+    setBorders(borders) {
+      byLabel = new Map(borders.map((b) => [borderLabel(b), b]));
+      choices = [NONE, ...byLabel.keys()];
+      for (const [obj, key] of [[draft, 'a'], [draft, 'b'], ...['b0', 'b1', 'b2', 'b3'].map((k) => [fillDraft, k])]) {
+        if (!byLabel.has(obj[key])) obj[key] = NONE;
+      }
+      buildChoices();
+    },
+    /** A border picked in the view fills the next empty choice; returns the choices so far. */
+    picked(kind, border) {
+      const label = borderLabel(border);
+      if (kind === 'blend') {
+        if (draft.a === NONE || draft.b !== NONE) {
+          draft.a = label;
+          draft.b = NONE;
+        } else draft.b = label;
+        refresh();
+        return [chosen(draft.a), chosen(draft.b)].filter(Boolean);
+      }
+      const keys = ['b0', 'b1', 'b2', 'b3'];
+      const free = keys.find((k) => fillDraft[k] === NONE);
+      if (!free) {
+        keys.forEach((k) => { fillDraft[k] = NONE; });
+        fillDraft.b0 = label;
+      } else fillDraft[free] = label;
+      refresh();
+      return keys.map((k) => chosen(fillDraft[k])).filter(Boolean);
+    },
+    blendOptions: () => ({ continuity: draft.continuity, power: draft.power }),
+    /** After a blend or a fill was made (or refused): the choices start again. */
+    clearChoices() {
+      draft.a = draft.b = NONE;
+      for (const k of ['b0', 'b1', 'b2', 'b3']) fillDraft[k] = NONE;
+      refresh();
+    },
+  };
+
+  function refresh() {
+    for (const c of folder.controllersRecursive()) c.updateDisplay();
+  }
+}
