@@ -6,13 +6,13 @@
 import * as THREE from 'three';
 import { clearPreview } from './placement-gizmo.js';
 
-export const SELECT_COLOR = 0xffffff;
+export const SELECT_COLOR = 0xfff0b8;
 
 export function createPatchMarks(surfaces) {
   const hidden = new Set();
   let selected = null;
   const tint = new THREE.Mesh(undefined, new THREE.MeshBasicMaterial({
-    color: SELECT_COLOR, transparent: true, opacity: 0.22, depthWrite: false, side: THREE.DoubleSide,
+    color: SELECT_COLOR, transparent: true, opacity: 0.38, depthWrite: false, side: THREE.DoubleSide,
   }));
   tint.name = 'selection tint';
   tint.frustumCulled = false;
