@@ -45,6 +45,9 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
   vertexWorld: (patch, k) => viewer.vertexWorld(patch, k),
   screenOf: (xyz) => viewer.screenOf(xyz),
+  // The viewer's modeller tools (border picker, placement gizmo, marks), for their tests.
+  modeller: () => viewer && { borders: viewer.borders, placement: viewer.placement, meshOf: viewer.meshOf,
+    select: viewer.select, setPatchVisible: viewer.setPatchVisible, marks: viewer.marks },
 });
 
 function messageOf(err) {

@@ -9,6 +9,9 @@ import { createBezierLayer } from './bezier-layer.js';
 import { createControlPointEditor } from './control-point-editor.js';
 import { createShading } from './shading.js';
 import { createJoinHighlight } from './join-highlight.js';
+import { createBorderPicker } from './border-picker.js';
+import { createPlacementGizmo } from './placement-gizmo.js';
+import { createPatchMarks } from './patch-marks.js';
 
 export const BACKGROUND = 0x20242b;
 
@@ -50,6 +53,11 @@ export function createViewer(container, bezierEditing) {
   const editor = createControlPointEditor({
     scene, camera, dom: renderer.domElement, orbit: controls, layer: bezier, render, ...bezierEditing,
   });
+  // The modeller's tools (idle until the page uses them): the gizmo first, so its presses
+  // are seen as its own before the picker's listeners run.
+  const placement = createPlacementGizmo({ scene, camera, dom: renderer.domElement, orbit: controls, render });
+  const borders = createBorderPicker({ scene, camera, dom: renderer.domElement, render, overlays, busy: placement.busy });
+  const marks = createPatchMarks(surfaces);
 
   function render() {
     renderer.render(scene, camera);
@@ -79,6 +87,10 @@ export function createViewer(container, bezierEditing) {
     camera,
     controls,
     editor,
+    /** Hover and pick a surface's border t0 or t1 (border-picker.js). */
+    borders,
+    /** Move, turn and scale a surface (placement-gizmo.js). */
+    placement,
 
     /**
      * Replace the drawn patches with freshly solved ones: in place when the same patches
@@ -95,12 +107,32 @@ export function createViewer(container, bezierEditing) {
         }
         for (const p of patches) surfaces.add(meshFromPatch(p));
       }
+      marks.solved();
       rig.invalidate();
       shading.refresh();
       bezier.update(patches);
+      borders.setPatches(patches);
       editor.refresh();
       render();
     },
+
+    /** The drawn mesh of the patch `name`, or null. */
+    meshOf: marks.meshOf,
+
+    /** Show or hide one patch (kept across solves). */
+    setPatchVisible(name, on) {
+      marks.setVisible(name, on);
+      render();
+    },
+
+    /** Tint the patch `name` as the selected one (kept across solves); null: none. */
+    select(name) {
+      marks.select(name);
+      render();
+    },
+
+    /** For the tests: { selected, tinted, hidden }. */
+    marks: marks.state,
 
     /** Shading mode (viewer/shading.js MODES); range { min, max } for the curvature maps. */
     setShading(mode, range = null) {
