@@ -62,11 +62,11 @@ export function parameterPrefix(patchName, fallback = 'p') {
 
 /**
  * A fresh parameter name for `key` of a patch: `${prefix}_${key}`, else with 2, 3, … after
- * the prefix, never a name in `taken` (names chosen earlier in the same edit).
+ * it, never a name in `taken` (names chosen earlier in the same edit).
  */
 export function uniqueParameterName(scene, prefix, key, taken = new Set()) {
   for (let k = 1; ; k++) {
-    const name = `${prefix}${k === 1 ? '' : k}_${key}`;
+    const name = `${prefix}_${key}${k === 1 ? '' : k}`;
     if (isFreeParameterName(scene, name, taken)) return name;
   }
 }

@@ -48,7 +48,7 @@ function checkAt(scene, at, path) {
 }
 
 // Every end by reference in the scene, as { surface, border, curve, where }.
-function existingEnds(scene) {
+export function existingEnds(scene) {
   const out = [];
   for (const p of patchesOf(scene)) {
     if (!isObject(p) || p.kind !== 'pde' || !isObject(p.ends)) continue;
@@ -63,7 +63,7 @@ function existingEnds(scene) {
 }
 
 /** The core's rules between ends (one curve per surface; a replaced border is met by nobody else). */
-function checkEndRules(ends) {
+export function checkEndRules(ends) {
   for (let i = 0; i < ends.length; i++) {
     for (let k = 0; k < i; k++) {
       const a = ends[i], b = ends[k];

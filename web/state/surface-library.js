@@ -92,7 +92,7 @@ export const SURFACE_LIBRARY = [
     build: explicit('t', 'w*v', { t_range: ['x0', 'x1'], v_range: OPEN }),
   },
   {
-    id: 'custom', label: 'custom (x, y, z in t and v)', closed: null, options: ['x', 'y', 'z', 't_range', 'v_range'],
+    id: 'custom', label: 'custom (x, y, z in t and v)', closed: true, options: ['x', 'y', 'z', 't_range', 'v_range'],
     params: [],
     build: (names, o = {}) => fromTemplate({
       t_range: o.t_range ?? [0, 1], v_range: o.v_range ?? CLOSED,
