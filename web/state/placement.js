@@ -1,5 +1,5 @@
-// Where a surface patch sits (scene version 4, field `placement`):
-//   X' = T + R·(s·X),  R = Rx(rx)·Ry(ry)·Rz(rz)
+// Where a surface patch sits (scene version 4, field `placement`, docs/scene-format-v4.md):
+//   X' = T + R·diag(s)·X,  R = Rx(rx)·Ry(ry)·Rz(rz), s one number or [sx, sy, sz]
 // three.js Euler order 'XYZ' (the same matrix), angles in degrees in the file. Each value
 // is a number or an expression over the scene's parameters (no variables).
 import { isObject, requirePatch } from './patch-names.js';
@@ -7,16 +7,28 @@ import { numberField } from './expr-text.js';
 
 const isZero = (x) => x === 0;
 
-function triple(scene, value, path, fallback) {
+const MAX_DEGREES = 1e6; // the core refuses angles beyond (docs/scene-format-v4.md)
+
+// Checks each entry (numberField throws on text the core refuses or non-finite values);
+// `each(value, path)` adds a check of the entry's value.
+function triple(scene, value, path, fallback, each = () => {}) {
   if (value === undefined) return [fallback, fallback, fallback];
   if (!Array.isArray(value) || value.length !== 3) throw new Error(`${path}: expected [x, y, z]`);
-  value.forEach((x, k) => numberField(scene, x, `${path}[${k}]`)); // throws on text the core refuses or non-finite
+  value.forEach((x, k) => each(numberField(scene, x, `${path}[${k}]`), `${path}[${k}]`));
   return value.map((x) => (typeof x === 'number' ? x : String(x)));
+}
+
+function checkAngle(x, path) {
+  if (Math.abs(x) > MAX_DEGREES) throw new Error(`${path}: an angle beyond ±${MAX_DEGREES} degrees`);
+}
+
+function checkScale(x, path) {
+  if (x === 0) throw new Error(`${path}: must not be 0 (a scale of 0 flattens the surface)`);
 }
 
 /**
  * Set (replace) a surface's placement: { translate: [x, y, z], rotate: [rx, ry, rz] in
- * degrees, scale: s }; a missing part is the identity. The field is omitted when all of it
+ * degrees, scale: s or [sx, sy, sz] }; a missing part is the identity. The field is omitted when all of it
  * is the identity (as numbers). Refuses non-finite values, text the core would refuse, and
  * a scale that is 0, naming the field. Raises the scene to version 4.
  */
@@ -30,10 +42,15 @@ export function setPlacement(scene, name, placement = {}) {
   }
   if (scene.version === 1) throw new Error('version: a version-1 scene has no "surface" patches');
   const translate = triple(scene, placement.translate, `${path}.translate`, 0);
-  const rotate = triple(scene, placement.rotate, `${path}.rotate`, 0);
-  const scale = placement.scale === undefined ? 1 : typeof placement.scale === 'number' ? placement.scale : String(placement.scale);
-  if (numberField(scene, scale, `${path}.scale`) === 0) throw new Error(`${path}.scale: must not be 0 (the surface would collapse to a point)`);
-  if (translate.every(isZero) && rotate.every(isZero) && scale === 1) {
+  const rotate = triple(scene, placement.rotate, `${path}.rotate`, 0, checkAngle);
+  let scale = placement.scale ?? 1;
+  if (Array.isArray(scale)) scale = triple(scene, scale, `${path}.scale`, 1, checkScale);
+  else {
+    scale = typeof scale === 'number' ? scale : String(scale);
+    checkScale(numberField(scene, scale, `${path}.scale`), `${path}.scale`);
+  }
+  const unit = Array.isArray(scale) ? scale.every((x) => x === 1) : scale === 1;
+  if (translate.every(isZero) && rotate.every(isZero) && unit) {
     delete patch.placement;
     return;
   }
@@ -59,6 +76,7 @@ export function placePoint(scene, placement, X) {
   const num = (x, path) => numberField(scene, x, path);
   const T = (placement.translate ?? [0, 0, 0]).map((x, k) => num(x, `placement.translate[${k}]`));
   const R = rotationMatrix((placement.rotate ?? [0, 0, 0]).map((x, k) => num(x, `placement.rotate[${k}]`)));
-  const s = num(placement.scale ?? 1, 'placement.scale');
-  return R.map((row, i) => T[i] + s * (row[0] * X[0] + row[1] * X[1] + row[2] * X[2]));
+  const sc = placement.scale ?? 1;
+  const s = Array.isArray(sc) ? sc.map((x, k) => num(x, `placement.scale[${k}]`)) : [0, 1, 2].map(() => num(sc, 'placement.scale'));
+  return R.map((row, i) => T[i] + row[0] * s[0] * X[0] + row[1] * s[1] * X[1] + row[2] * s[2] * X[2]);
 }
