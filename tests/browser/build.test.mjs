@@ -13,6 +13,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
+import { encodeState } from '../../web/link/link-codec.js';
 
 const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
 
@@ -71,6 +72,15 @@ async function waitLink(page) {
   await page.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 10_000 });
   await page.waitForTimeout(400); // the hash sync settles
   return page.evaluate(() => location.href);
+}
+
+// Four strips around the hole [-1, 1]²: one rectangle x in [1, 2] turned by 0, 90, 180, 270°
+// about z, so their t0 borders (x = 1 before turning) close into a square loop.
+function fourStrips() {
+  const strip = (k) => ({ name: `strip${k}`, kind: 'surface', t_range: [1, 2], v_range: [-1, 1],
+    x: 't', y: 'v', z: 'c*(t^2 - v^2)', ...(k ? { placement: { rotate: [0, 0, 90 * k] } } : {}) });
+  return { format: 'pdesurf-scene', version: 4, title: 'four strips',
+    parameters: { c: { value: 0.1, min: 0, max: 0.3 } }, patches: [0, 1, 2, 3].map(strip) };
 }
 
 describe('building a model in the page', { skip }, () => {
@@ -211,6 +221,39 @@ describe('building a model in the page', { skip }, () => {
     await page.waitForTimeout(200);
     assert.match(await page.locator('#panel .build-message').textContent(), /^cannot blend: /);
     assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    await page.close();
+  });
+
+  it('a hole filled by picking four borders; deleting a strip the fill names, both answers', async () => {
+    const page = await h.open(`/web/#${await encodeState({ scene: fourStrips() })}`);
+    assert.equal((await hooks(page)).lastError, null);
+    await control(page, 'fill-pick').locator('input').check();
+    for (const k of [0, 2, 1]) await clickBorder(page, `strip${k}`, 't0');
+    await solving(page, () => clickBorder(page, 'strip3', 't0'));
+    assert.equal((await hooks(page)).lastError, null);
+    const s = await scene(page);
+    const fill = s.patches.find((p) => p.kind === 'bezier');
+    assert.equal(fill.name, 'fill1');
+    assert.deepEqual(Object.keys(fill.borders).sort(), ['u0', 'u1', 'v0', 'v1']);
+    const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
+    assert.equal(joins.filter((j) => j.patch === 'fill1').length, 4, JSON.stringify(joins));
+    assert.ok(joins.every((j) => j.ok && j.level === 'G1'), JSON.stringify(joins));
+    await shoot(page, 'build-fill-1280.png');
+    const { report } = checkLink(await waitLink(page));
+    assert.equal(report.ok, true);
+
+    const del = page.locator('#panel [data-patch="strip1"] [data-action="delete"]');
+    await del.click();
+    await solving(page, () => page.locator('#panel [data-action="delete-dependents"]').click());
+    assert.deepEqual(await names(page), ['strip0', 'strip2', 'strip3']);
+    await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
+    assert.deepEqual(await names(page), ['strip0', 'strip1', 'strip2', 'strip3', 'fill1']);
+    await del.click();
+    await solving(page, () => page.locator('#panel [data-action="detach-dependents"]').click());
+    const detached = await scene(page);
+    assert.deepEqual(detached.patches.map((p) => p.name), ['strip0', 'strip2', 'strip3', 'fill1']);
+    assert.equal(Object.keys(detached.patches[3].borders || {}).length, 3, 'the deleted strip\'s border became typed rings');
+    assert.equal((await hooks(page)).lastError, null);
     await page.close();
   });
 });
