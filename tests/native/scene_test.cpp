@@ -89,7 +89,7 @@ TEST_CASE("scene errors: fields") {
   CHECK(outcomeOf(j) == "InvalidField: format: expected \"pdesurf-scene\"");
   j = fig2a();
   j["version"] = 7;
-  CHECK(outcomeOf(j) == "InvalidField: version: this build reads scene versions 1, 2 and 3");
+  CHECK(outcomeOf(j) == "InvalidField: version: this build reads scene versions 1 to 4");
   j = fig2a();
   j["colour"] = "red";
   CHECK(outcomeOf(j) == "InvalidField: scene.colour: unknown field");
