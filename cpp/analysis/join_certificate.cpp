@@ -73,7 +73,9 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
     p1 = sameV ? a1 : prim.surface.v1;
   }
   const auto B = edgeSamples(ts, m.alongU, m.end, a0, a1, kJoinSamples);
-  const auto P = edgeSamples(prim.surface, false, m.atT1 ? 1 : 0, p0, p1, kJoinSamples);
+  auto P = edgeSamples(prim.surface, false, m.atT1 ? 1 : 0, p0, p1, kJoinSamples);
+  // A reversed Bézier border (version 4) runs over the primary's v backwards.
+  if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
   const double floor = 1e-9 * size;
   int measured = 0;
   double worstFigure = -1.0;

@@ -69,10 +69,37 @@ void addAssemblyWork(const BezierProblem& b, const std::string& path, size_t& to
              ", over the limit " + std::to_string(limits::kBezierAssembly) + " per scene (use coarser normal grids, lower degrees or fewer patches)");
 }
 
+// Version 4: "borders": {"u0": {"surface", "at", "reverse"}, ...}, any of the four edges.
+void parseBorders(const json& j, const std::string& path, int version, Patch& patch) {
+  const std::string bp = path + ".borders";
+  if (version < 4) fail(ErrorCode::InvalidField, bp, "Bezier borders by reference need scene version 4");
+  allowOnly(j, bp, {"u0", "u1", "v0", "v1"});
+  for (int e = 0; e < 4; ++e) {
+    if (!j.contains(kBezierEdge[e])) continue;
+    const std::string ep = bp + "." + kBezierEdge[e];
+    const json& ej = j[kBezierEdge[e]];
+    allowOnly(ej, ep, {"surface", "at", "reverse"});
+    BorderReference& ref = patch.borders[e];
+    ref.given = true;
+    ref.path = ep;
+    ref.surface = stringField(require(ej, "surface", ep), ep + ".surface", 64);
+    const std::string at = stringField(require(ej, "at", ep), ep + ".at");
+    if (at != "t0" && at != "t1") fail(ErrorCode::InvalidField, ep + ".at", "expected \"t0\" or \"t1\" (the surface's border t = t0 or t = t1)");
+    ref.atT1 = at == "t1";
+    if (ej.contains("reverse")) {
+      if (!ej["reverse"].is_boolean()) fail(ErrorCode::InvalidField, ep + ".reverse", "expected true or false");
+      ref.reverse = ej["reverse"].get<bool>();
+    }
+  }
+}
+
 }  // namespace
 
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch, size_t& assemblyWork) {
-  allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals"});
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, size_t& assemblyWork) {
+  allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals", "borders"});
+  if (j.contains("borders")) parseBorders(j["borders"], path, version, patch);
+  bool allFour = true;
+  for (const BorderReference& ref : patch.borders) allFour = allFour && ref.given;
   BezierProblem& b = patch.bezier;
   const std::string energy = stringField(require(j, "energy", path), path + ".energy");
   if (energy == "membrane") b.energy = BezierEnergy::Membrane;
@@ -80,7 +107,10 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
   else fail(ErrorCode::InvalidField, path + ".energy", "expected \"membrane\" or \"thin-plate\"");
   const auto deg = pair(require(j, "degree", path), path + ".degree", 1, limits::kBezierDegree);
   b.n = deg[0], b.m = deg[1];
-  b.initial = points(require(j, "control_net", path), path + ".control_net", r, static_cast<size_t>(b.n + 1) * (b.m + 1));
+  // With all four borders given by reference the net may be left out: deriveBorders builds it
+  // (scene/bezier_borders.hpp).
+  if (j.contains("control_net") || !allFour)
+    b.initial = points(require(j, "control_net", path), path + ".control_net", r, static_cast<size_t>(b.n + 1) * (b.m + 1));
   b.lambda = j.contains("lambda") ? r.number(j["lambda"], path + ".lambda") : 0.0;
   b.gamma = j.contains("gamma") ? r.number(j["gamma"], path + ".gamma") : 0.0;
   const std::string np = path + ".normals";

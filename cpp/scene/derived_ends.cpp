@@ -196,10 +196,10 @@ void trim(Patch& surface, const EndReference& ref) {
 // result does not depend on the patches' order: find every end's surface, check the rules
 // between ends, derive and check every end, write every blend's conditions, record every
 // join in the trimmed parametrisation, and only then trim.
-void deriveEnds(Scene& scene) {
-  // One budget for the whole scene: every node built for any end (and for the surfaces they
-  // trim) counts, and the first node over the limit stops the derivation.
-  ExprBudget budget(limits::kDerivedNodes, "the derived conditions of the scene's ends and the surfaces they trim");
+void deriveEnds(Scene& scene, ExprBudget& budget) {
+  // One budget for the whole scene (the caller's, shared with the Bezier borders): every node
+  // built for any end (and for the surfaces they trim) counts, and the first node over the
+  // limit stops the derivation.
   std::vector<DerivedEnd> all;
   for (Patch& blend : scene.patches) {
     if (blend.kind != PatchKind::Pde) continue;

@@ -12,6 +12,7 @@
 // An end asking less than the operator carries gets the ruled surface's conditions:
 // X_u = X(1, v) - X(0, v), X_uu = 0.
 #pragma once
+#include "expr/budget.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
@@ -23,7 +24,8 @@ namespace pdesurf {
 // are recorded in the trimmed parametrisation, the trims come last. A surface is trimmed along
 // one curve at most, and the border it replaces is met by no other end. Throws
 // Error(UnknownName | InvalidField | NonFinite | TooLarge) naming the end and, where it
-// applies, the v at fault.
-void deriveEnds(Scene& scene);
+// applies, the v at fault. Every node built is charged to `budget` (the scene's, which
+// parseScene makes current and shares with deriveBorders).
+void deriveEnds(Scene& scene, ExprBudget& budget);
 
 }  // namespace pdesurf

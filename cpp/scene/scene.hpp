@@ -79,9 +79,27 @@ struct Meets {
   // (NaN): a PDE blend shares v with the primary, a Bézier border maps [0, 1] onto v_range.
   double v0 = NAN, v1 = NAN;
   // Version 3: the end that made this join ("patches[2].ends.u0", for errors); empty: the
-  // scene's own `meets`.
+  // scene's own `meets`. Version 4: also a Bézier border ("patches[4].borders.v1").
   std::string by;
+  // Version 4, a Bézier border with "reverse": the border parameter 0..1 runs over the
+  // primary's v-range backwards (v1 to v0).
+  bool reversed = false;
 };
+
+// Version 4: a Bézier patch's border given by reference, {"surface", "at", "reverse"}
+// (docs/bezier.md, "Borders by reference"): its two outer rings of control points are derived
+// from the surface's border t = t0 or t1 (scene/bezier_borders.hpp).
+struct BorderReference {
+  bool given = false;
+  std::string surface;   // the name of a "surface" patch
+  bool atT1 = false;     // the surface's border t = t1 (else t0)
+  bool reverse = false;  // the surface's v runs backwards along the edge
+  std::string path;      // "patches[4].borders.u0", for errors
+};
+
+// The Bézier patch's edges in the order of Patch::borders: u = 0, u = 1 (running along v),
+// v = 0, v = 1 (running along u); the names `meets.end` uses for a Bézier patch.
+inline const char* const kBezierEdge[4] = {"u0", "u1", "v0", "v1"};
 
 // The operator of one coordinate as the scene names it, resolved to numbers: order 2 {s, t},
 // order 4 {b, c, d}, order 6 {a} (= (∂²u + a²∂²v)³) or, for any order, coefficients[k].
@@ -109,10 +127,14 @@ struct Patch {
   // end that asks less than the operator carries.
   std::array<EndReference, 2> ends;
   std::array<std::array<Expr, 3>, 2> typedPosition;
+  // Bezier only, version 4: the borders given by reference, in kBezierEdge's order. A patch
+  // whose four borders are given may omit its control_net (bezier.initial is then empty until
+  // deriveBorders builds it).
+  std::array<BorderReference, 4> borders;
 };
 
 struct Scene {
-  int version = 2;  // of the file it was read from (1, 2 or 3)
+  int version = 2;  // of the file it was read from (1 to 4)
   std::string title;
   std::vector<Parameter> parameters;
   std::vector<Patch> patches;

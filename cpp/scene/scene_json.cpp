@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "bezier/bezier_solver.hpp"
+#include "expr/budget.hpp"
+#include "scene/bezier_borders.hpp"
 #include "scene/derived_ends.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/placement.hpp"
@@ -20,7 +22,8 @@ using namespace scene_json;
 
 // In scene/bezier_json.cpp.
 // Adds the patch's assembly work to assemblyWork, the scene's total (limits::kBezierAssembly).
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, Patch& patch, size_t& assemblyWork);
+// Version 4: its "borders" (kept in patch.borders); the control_net may then be left out.
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, size_t& assemblyWork);
 // In scene/pde_json.cpp.
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
@@ -237,8 +240,9 @@ static Scene parseSceneUnchecked(const std::string& text) {
     } else if (kind == "bezier" && scene.version >= 2) {
       patch.kind = PatchKind::Bezier;
       try {
-        parseBezierPatch(pj, path, r, patch, assemblyWork);
-        validateBezierProblem(patch.bezier);
+        parseBezierPatch(pj, path, r, scene.version, patch, assemblyWork);
+        // A net left out (four borders by reference) is checked once deriveBorders has built it.
+        if (!patch.bezier.initial.empty()) validateBezierProblem(patch.bezier);
       } catch (const Error& e) {
         const std::string what = e.what();
         throw Error(e.code(), what.rfind(path, 0) == 0 ? what : path + ": " + what);
@@ -252,7 +256,12 @@ static Scene parseSceneUnchecked(const std::string& text) {
     }
     scene.patches.push_back(std::move(patch));
   }
-  deriveEnds(scene);  // version 3: ends by reference, once every surface is known
+  {
+    // One budget for every node derived for the scene: its ends and its Bezier borders.
+    ExprBudget budget(limits::kDerivedNodes, "the derived conditions of the scene's ends and Bezier borders and the surfaces they trim");
+    deriveEnds(scene, budget);     // version 3: ends by reference, once every surface is known
+    deriveBorders(scene, budget);  // version 4: Bezier borders by reference (after the trims: it refuses a trimmed surface)
+  }
   for (size_t i = 0; i < scene.patches.size(); ++i)
     for (const Meets& m : scene.patches[i].meets) {
       if (!m.by.empty()) continue;  // derived from an end: its patch is that end's blend
