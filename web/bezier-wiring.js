@@ -13,12 +13,13 @@ export function createBezierWiring() {
   let solved = new Map(); // patch name -> its last solved result (resolved numbers)
   let editing = null; // the patch whose "pick & drag" is on
 
-  // The scene's numbers; an expression entry shows its last resolved value.
+  // The scene's numbers; an expression entry shows its last resolved value. A fill whose
+  // borders are given by reference may have no control_net: it shows the solved initial net.
   function pointOf(name, i, j) {
     const patch = ctx.state.bezierPatch(name);
     const s = solved.get(name);
     return AXES.map((axis, a) => {
-      const v = controlPointEntry(patch, i, j, axis);
+      const v = Array.isArray(patch.control_net) ? controlPointEntry(patch, i, j, axis) : null;
       if (typeof v === 'number') return v;
       return s ? s.initialNet[3 * (i * s.netSize[1] + j) + a] : 0;
     });
@@ -26,6 +27,17 @@ export function createBezierWiring() {
 
   // Every edit goes through the document's door: it re-solves (the solver reports bad values).
   const edit = (write) => ctx.doc.apply({ name: 'edit the control net', run: write }).ok;
+
+  // The first edit of a net the scene leaves out (a fill with four borders) writes the solved
+  // initial net into the scene; the borders still fix their rings over it.
+  function writeNet(name) {
+    const patch = ctx.state.bezierPatch(name);
+    if (Array.isArray(patch.control_net)) return;
+    const s = solved.get(name);
+    if (!s) throw new Error(`${name} has no solved net yet`);
+    const round = (x) => Math.round(x * 1e7) / 1e7;
+    patch.control_net = Array.from({ length: s.netSize[0] * s.netSize[1] }, (_, k) => [0, 1, 2].map((a) => round(s.initialNet[3 * k + a])));
+  }
 
   const viewerHandlers = {
     pointOf,
@@ -37,7 +49,7 @@ export function createBezierWiring() {
     // did not move stays an expression), rounded as the examples are: short links.
     onMove(name, i, j, xyz) {
       const old = pointOf(name, i, j);
-      const write = () => AXES.forEach((axis, a) => {
+      const write = () => writeNet(name) || AXES.forEach((axis, a) => {
         if (xyz[a] !== old[a]) ctx.state.setControlPointCoordinate(name, i, j, axis, Math.round(xyz[a] * 1e6) / 1e6);
       });
       if (edit(write)) ctx.panel.refreshControlPoint(name);
@@ -60,7 +72,7 @@ export function createBezierWiring() {
       if (editing === name) ctx.viewer.editControlPoint(name, i, j);
     },
     onCoordinate(name, i, j, axis, value) {
-      if (edit(() => ctx.state.setControlPointCoordinate(name, i, j, axis, value)) && editing === name) {
+      if (edit(() => writeNet(name) || ctx.state.setControlPointCoordinate(name, i, j, axis, value)) && editing === name) {
         ctx.viewer.editControlPoint(name, i, j); // the marker follows the typed number
       }
     },

@@ -75,10 +75,11 @@ async function waitLink(page) {
 }
 
 // Four strips around the hole [-1, 1]²: one rectangle x in [1, 2] turned by 0, 90, 180, 270°
-// about z, so their t0 borders (x = 1 before turning) close into a square loop.
+// about z, so their t0 borders (x = 1 before turning) close into a square loop; all four are
+// pieces of one paraboloid z = c(x² + y²) (turning keeps it), so a G1 fill exists.
 function fourStrips() {
   const strip = (k) => ({ name: `strip${k}`, kind: 'surface', t_range: [1, 2], v_range: [-1, 1],
-    x: 't', y: 'v', z: 'c*(t^2 - v^2)', ...(k ? { placement: { rotate: [0, 0, 90 * k] } } : {}) });
+    x: 't', y: 'v', z: 'c*(t^2 + v^2)', ...(k ? { placement: { rotate: [0, 0, 90 * k] } } : {}) });
   return { format: 'pdesurf-scene', version: 4, title: 'four strips',
     parameters: { c: { value: 0.1, min: 0, max: 0.3 } }, patches: [0, 1, 2, 3].map(strip) };
 }
@@ -227,6 +228,7 @@ describe('building a model in the page', { skip }, () => {
   it('a hole filled by picking four borders; deleting a strip the fill names, both answers', async () => {
     const page = await h.open(`/web/#${await encodeState({ scene: fourStrips() })}`);
     assert.equal((await hooks(page)).lastError, null);
+    await page.locator('#panel .build-folder .title', { hasText: 'Fill a loop' }).click(); // closed at first
     await control(page, 'fill-pick').locator('input').check();
     for (const k of [0, 2, 1]) await clickBorder(page, `strip${k}`, 't0');
     await solving(page, () => clickBorder(page, 'strip3', 't0'));
@@ -255,5 +257,9 @@ describe('building a model in the page', { skip }, () => {
     assert.equal(Object.keys(detached.patches[3].borders || {}).length, 3, 'the deleted strip\'s border became typed rings');
     assert.equal((await hooks(page)).lastError, null);
     await page.close();
+  });
+
+  it('left no console or page errors', () => {
+    assert.deepEqual(h.problems, []);
   });
 });
