@@ -34,8 +34,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       doc.select(null);
       openBuilt(newScene(), 'untitled scene');
     },
-    onAdd: (kind) => {
-      const r = build(`add a ${libraryEntry(kind)?.label ?? kind}`, (s) => addSurface(s.scene, kind), { said: (n) => `added ${n}` });
+    onAdd: (kind, options = {}) => {
+      const name = kind === 'custom' ? 'custom surface' : libraryEntry(kind)?.label ?? kind;
+      const r = build(`add a ${name}`, (s) => addSurface(s.scene, kind, options), { said: (n) => `added ${n}` });
       if (r.ok) doc.select(r.result);
     },
     onBlend: (a, b, options) => makeBlend(a, b, options),
@@ -161,10 +162,18 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   doc.on('refused', (err, edit) => {
     if (edit.build) folder.say(`cannot ${edit.name}: ${err && err.message ? err.message : err}`, true);
   });
+  // The selected patch's own folders (its operator, ends, functions, net) open.
+  function revealFolders(name) {
+    if (!name) return;
+    const own = panel.gui.folders.filter((f) => f.$title.textContent.endsWith(`“${name}”`));
+    for (const f of own) f.open();
+  }
+
   doc.on('selection', (name) => {
     outliner.select(name);
     viewer.select(name);
     showPlacementOf(name);
+    revealFolders(name);
   });
 
   hooks.build = () => ({ pickMode, gizmoMode, selection: doc.selection(), hidden: [...hidden] });

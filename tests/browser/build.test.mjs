@@ -259,6 +259,38 @@ describe('building a model in the page', { skip }, () => {
     await page.close();
   });
 
+  it('a curve trimline shaped by five values becomes a trigonometric τ(v) and stays G1', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    const end = page.locator('#panel [data-end="fillet.u1"]');
+    await solving(page, () => end.locator('[data-end-field="at"] select').selectOption({ label: 'curve t = τ(v)' }));
+    const values = end.locator('[data-end-field="tau-values"]');
+    await values.locator('.title').click();
+    const input = (k) => values.locator('.controller.number input').nth(k);
+    const type = async (k, text) => {
+      await input(k).fill(text);
+      await input(k).press('Enter');
+    };
+    // One value raised off the border: the curve through them dips below t0 between them.
+    const before = await hooks(page);
+    await type(0, '1.2');
+    await page.waitForTimeout(300);
+    assert.match(await values.locator('.tau-values-note').textContent(), /^the curve through these values reaches t = 0\.\d+ at v = [\d.]+, outside \[0\.9000, 3\.092\]/);
+    assert.equal((await hooks(page)).solveCount, before.solveCount, 'a curve outside the range is not sent');
+    for (const k of [1, 2, 3]) await type(k, '1.2');
+    await solving(page, () => type(4, '1.2'));
+    await solving(page, () => type(0, '1.3'));
+    assert.equal((await hooks(page)).lastError, null);
+    assert.equal(await values.locator('.tau-values-note').textContent(), '');
+    const tau = (await scene(page)).patches[0].ends.u1.at.t;
+    assert.match(tau, /cos\(|sin\(/, tau);
+    assert.equal(await end.locator('[data-end-field="tau"] input').inputValue(), tau);
+    const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
+    assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
+    await values.scrollIntoViewIfNeeded();
+    await shoot(page, 'build-tau-values-1280.png');
+    await page.close();
+  });
+
   it('left no console or page errors', () => {
     assert.deepEqual(h.problems, []);
   });

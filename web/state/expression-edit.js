@@ -64,3 +64,21 @@ export function surfaceCoordinate(patch, axis) {
 export function setSurfaceCoordinate(patch, axis, text) {
   patch[axis] = String(text);
 }
+
+export const RANGE_ENDS = [['t_range', 0, 't from'], ['t_range', 1, 't to'], ['v_range', 0, 'v from'], ['v_range', 1, 'v to']];
+const DEFAULT_RANGES = { t_range: [0, 1], v_range: [0, '2*pi'] };
+
+/** One end of a surface's t_range or v_range, as text (a number or an expression). */
+export function surfaceRangeEnd(patch, key, k) {
+  const range = Array.isArray(patch[key]) ? patch[key] : DEFAULT_RANGES[key];
+  return asText(range[k]);
+}
+
+/** Write one end of a range: a plain number stays a number (short links), else the text. */
+export function setSurfaceRangeEnd(patch, key, k, text) {
+  if (key !== 't_range' && key !== 'v_range') throw new Error(`no range ${JSON.stringify(key)}`);
+  const range = Array.isArray(patch[key]) ? [...patch[key]] : [...DEFAULT_RANGES[key]];
+  const t = String(text).trim();
+  range[k] = t !== '' && Number.isFinite(Number(t)) ? Number(t) : t;
+  patch[key] = range;
+}

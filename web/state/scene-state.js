@@ -2,7 +2,7 @@
 // JSON.stringify(scene) is exactly what the solver sees.
 import { withParam, withOrder, orderOf, defaultParams, defaultOperator, isPerCoordinate, AXES } from './operator-edit.js';
 import { createBoundaryStash } from './boundary-stash.js';
-import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate } from './expression-edit.js';
+import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate, setSurfaceRangeEnd } from './expression-edit.js';
 import { addParameter, removeParameter } from './parameter-edit.js';
 import { setRegionWeights } from './region-weights.js';
 import { setControlPointCoordinate } from './control-net-edit.js';
@@ -105,13 +105,14 @@ export function createSceneState() {
 
     /**
      * Write one expression field: { kind: 'boundary', axis, end, k } | { kind: 'force', axis }
-     * | { kind: 'surface', axis }.
+     * | { kind: 'surface', axis } | { kind: 'range', key: 't_range' | 'v_range', k: 0 | 1 }.
      */
     setExpression(patchName, field, text) {
       const patch = state.patch(patchName);
       if (field.kind === 'boundary') setBoundarySlot(patch, field.axis, field.end, field.k, text);
       else if (field.kind === 'force') setForce(patch, field.axis, text);
       else if (field.kind === 'surface') setSurfaceCoordinate(patch, field.axis, text);
+      else if (field.kind === 'range') setSurfaceRangeEnd(patch, field.key, field.k, text);
       else throw new Error(`unknown expression field ${JSON.stringify(field.kind)}`);
     },
 

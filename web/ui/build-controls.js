@@ -9,12 +9,19 @@ import { escapeHtml } from './html-text.js';
 const CONTINUITIES = { 'position (G0)': 'position', 'tangency (G1)': 'tangency', 'curvature (G2)': 'curvature' };
 export const NONE = '—';
 
+// "0, 2*pi" -> [0, "2*pi"]: two entries, plain numbers as numbers.
+function rangeOf(text, name) {
+  const parts = String(text).split(',').map((p) => p.trim());
+  if (parts.length !== 2 || parts.some((p) => p === '')) throw new Error(`${name} range: expected "from, to", not ${JSON.stringify(String(text))}`);
+  return parts.map((p) => (Number.isFinite(Number(p)) ? Number(p) : p));
+}
+
 const borderLabel = (b) => `${b.surface} · ${b.at}`;
 // lil-gui writes option names as markup: a name from the scene is escaped to show as text.
 const asOptions = (labels) => Object.fromEntries(labels.map((l) => [escapeHtml(l), l]));
 
 /**
- * handlers: { onNew(), onAdd(kindId), onBlend(a, b, options), onFill(borders[4]),
+ * handlers: { onNew(), onAdd(kindId, options?), onBlend(a, b, options), onFill(borders[4]),
  *   onPickMode(kind: 'blend' | 'fill' | null) }; borders are { surface, at }.
  */
 export function buildBuildFolder(gui, handlers) {
@@ -26,6 +33,23 @@ export function buildBuildFolder(gui, handlers) {
   const addRow = folder.add(add, 'kind', labels).name('surface');
   addRow.domElement.dataset.build = 'kind';
   folder.add({ add: () => handlers.onAdd(add.kind) }, 'add').name('+ add surface');
+  // A surface typed as three expressions in t and v, with its ranges.
+  const custom = folder.addFolder('Custom surface');
+  const typed = { x: 'cos(v)', y: 'sin(v)', z: 't', t: '0, 1', v: '0, 2*pi' };
+  for (const [key, label] of [['x', 'x(t,v)'], ['y', 'y(t,v)'], ['z', 'z(t,v)'], ['t', 't from, to'], ['v', 'v from, to']]) {
+    custom.add(typed, key).name(escapeHtml(label)).domElement.dataset.build = `custom-${key}`;
+  }
+  custom.add({ add: () => {
+    let ranges;
+    try {
+      ranges = { t_range: rangeOf(typed.t, 't'), v_range: rangeOf(typed.v, 'v') };
+    } catch (err) {
+      say(`cannot add a custom surface: ${err.message}`, true);
+      return;
+    }
+    handlers.onAdd('custom', { x: typed.x, y: typed.y, z: typed.z, ...ranges });
+  } }, 'add').name('+ add custom surface');
+  custom.close();
 
   const draft = { a: NONE, b: NONE, continuity: 'tangency', power: 1, pick: false };
   const fillDraft = { b0: NONE, b1: NONE, b2: NONE, b3: NONE, pick: false };

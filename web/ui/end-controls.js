@@ -12,6 +12,7 @@ import { escapeHtml } from './html-text.js';
 import { buildExpressionField } from './expression-field.js';
 import { buildPowerControl } from './power-control.js';
 import { buildDerivedFields } from './derived-fields.js';
+import { buildTauHandles } from './tau-handles.js';
 import {
   ENDS, TRIMLINES, ISO_LINES, CONTINUITIES, SCALES,
   readEnd, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField, detachRefusal,
@@ -103,6 +104,10 @@ export function buildEndFolders(gui, scene, solved, handlers) {
         path: `patches[${view.index}].ends.${end}.at.t`, value: e.tau, onEdit: (text) => send(view, 'tau', text, true),
       });
       view.tau.element.dataset.endField = 'tau';
+      buildTauHandles(folder, { scene, blend: view.patch, end, tau: e.tau, onTau: (text) => {
+        view.tau.element.querySelector('input').value = text;
+        send(view, 'tau', text, true);
+      } });
       select(view, model, 'replaces', optionsOf(ISO_LINES), 'replaces',
         'the border the curve replaces: the surface is drawn from the curve to its other border', (iso) => send(view, 'replaces', iso));
     }

@@ -7,7 +7,7 @@
 import { escapeHtml } from './html-text.js';
 import { buildExpressionField, fieldForMessage } from './expression-field.js';
 import {
-  AXES, ENDS, boundaryPath, forcePath, surfacePath, boundarySlot, forceOf, surfaceCoordinate,
+  AXES, ENDS, boundaryPath, forcePath, surfacePath, boundarySlot, forceOf, surfaceCoordinate, RANGE_ENDS, surfaceRangeEnd,
 } from '../state/expression-edit.js';
 import { isByReference } from '../state/ends-edit.js';
 
@@ -87,6 +87,13 @@ export function buildExpressionFolders(gui, scene, solved, onEdit) {
         const f = buildExpressionField(folder, {
           label: `${axis}(t,v)`, title: `${axis} of the surface, a function of t and v`, path: surfacePath(index, axis),
           value: surfaceCoordinate(patch, axis), onEdit: edit(patch.name, { kind: 'surface', axis }, () => f),
+        });
+        surfaceFields.push(f);
+      }
+      for (const [key, k, label] of RANGE_ENDS) {
+        const f = buildExpressionField(folder, {
+          label, title: `the surface's ${key}[${k}], a number or an expression in the parameters`, path: `patches[${index}].${key}[${k}]`,
+          value: surfaceRangeEnd(patch, key, k), onEdit: edit(patch.name, { kind: 'range', key, k }, () => f),
         });
         surfaceFields.push(f);
       }
