@@ -2,9 +2,12 @@
 // Benchmark (not a test) of the page in headless Chromium: the cold start of the production
 // page (navigation to the first surface, cache cleared, median of 5) with the bytes it moves,
 // and the page path of a re-solve (slider edit to drawn: worker solve, transfer, in-place
-// attribute update, render) against the worker's own solve time, at 64², 256² and 1024².
+// attribute update, render) against the worker's own solve time, at 64², 256² and 1024²; and
+// the frames painted while a surface is dragged with the placement gizmo and its fillet
+// re-solves live (ref-sphere-fillet at 64², one pointer move per frame).
 // Run by scripts/bench after the builds; needs build/web (scripts/build-web.mjs).
 import { startHarness, coldStart } from '../tests/browser/harness.mjs';
+import { dragSurface } from '../tests/browser/gizmo-drag.mjs';
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
@@ -36,6 +39,10 @@ try {
     const r = await pagePath(page, n);
     console.log(`${`${n}x${n}`.padEnd(10)} ${r.page.toFixed(1).padStart(10)} ${r.worker.toFixed(1).padStart(10)} ${(r.page / r.worker).toFixed(2).padStart(8)}`);
   }
+  const fillet = await h.open('/app/#example=ref-sphere-fillet');
+  const d = await dragSurface(fillet, 'sphere', { steps: 120, pixels: 1 });
+  console.log(`\ngizmo drag of the sphere under its fillet (64², re-solved live): ${d.fps.toFixed(1)} frames/s over ${d.dragMs} ms,` +
+    ` longest gap ${d.maxGap.toFixed(0)} ms, ${d.solvesDuring} solves drawn, longest task ${Math.max(0, ...d.longTasks)} ms`);
 } finally {
   await h.close();
 }

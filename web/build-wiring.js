@@ -9,7 +9,7 @@ import { buildPlacementFolder } from './ui/placement-controls.js';
 import { addSurface, libraryEntry } from './state/surface-library.js';
 import { addBlend, addFill } from './state/scene-join.js';
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
-import { previewMesh, clearPreview, pivotOf } from './viewer/placement-gizmo.js';
+import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
 
 const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
 
@@ -21,6 +21,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   let gizmoMode = null; // 'translate' | 'rotate' | 'scale' | null
   let placement = null; // the selected surface's placement folder
   const hidden = new Set();
+  const drawnPlacement = new Map(); // surface name -> the placement its drawn mesh was solved at
 
   // Building edits: one undo step each; the answer shows beside the choices.
   function build(name, run, more = {}) {
@@ -126,23 +127,23 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     attachGizmo(name);
   }
 
-  // The gizmo previews the drawn mesh while dragging; the release is one edit (one solve).
+  // A gizmo drag re-solves as it goes (blends by reference follow the surface live, and
+  // the whole drag is one undo step, like a slider's); between solves the drawn mesh is
+  // moved by the placement's change since the solve it shows (a preview, no solve).
   function attachGizmo(name) {
+    if (viewer.placement.dragging()) return; // a solve drawn mid-drag leaves the drag alone
     viewer.placement.detach();
     const patch = surfacesOf(state.scene).find((p) => p.name === name);
     const mesh = viewer.meshOf(name);
     if (!gizmoMode || !patch || !mesh) return;
-    const before = patch.placement || null;
     viewer.placement.setMode(gizmoMode);
-    viewer.placement.attach(name, before, pivotOf(mesh), {
+    const place = (now) => doc.apply({ name: 'place', run: (s) => setPlacement(s.scene, name, now), build: true });
+    viewer.placement.attach(name, patch.placement ?? IDENTITY, pivotOf(mesh), {
       onDrag: (now) => {
-        previewMesh(mesh, before, now);
-        viewer.render?.();
+        previewMesh(viewer.meshOf(name), drawnPlacement.get(name) ?? IDENTITY, now);
+        place(now);
       },
-      onCommit: (now) => {
-        clearPreview(mesh);
-        build('place', (s) => setPlacement(s.scene, name, now), { structure: false });
-      },
+      onCommit: (now) => place(now),
     });
   }
 
@@ -185,9 +186,11 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       refresh();
       showPlacementOf(doc.selection());
     },
-    /** A good solve was drawn: borders and the gizmo's mesh are the new ones. */
-    drawn(patches) {
+    /** A good solve of `sceneText` was drawn: borders and the gizmo's mesh are the new ones. */
+    drawn(patches, sceneText) {
       drawn = patches;
+      drawnPlacement.clear();
+      for (const p of surfacesOf(JSON.parse(sceneText))) if (p.placement) drawnPlacement.set(p.name, p.placement);
       for (const name of hidden) viewer.setPatchVisible(name, false);
       if (doc.selection() && gizmoMode) attachGizmo(doc.selection());
     },

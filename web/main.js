@@ -308,7 +308,7 @@ async function start() {
     undoRedo.solved();
     bezier.solvedPatches(result.patches);
     viewer.setPatches(result.patches);
-    building.drawn(result.patches);
+    building.drawn(result.patches, job.scene);
     analysis.solved(result, job.options);
     state.noteSolved(result.patches);
     if (cameraPending) viewer.setCamera(cameraPending);

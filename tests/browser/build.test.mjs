@@ -14,6 +14,7 @@ import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
 import { encodeState } from '../../web/link/link-codec.js';
+import { dragSurface } from './gizmo-drag.mjs';
 
 const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
 
@@ -288,6 +289,26 @@ describe('building a model in the page', { skip }, () => {
     assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
     await values.scrollIntoViewIfNeeded();
     await shoot(page, 'build-tau-values-1280.png');
+    await page.close();
+  });
+
+  it('dragging the sphere with the gizmo re-solves the fillet as it goes; one undo step; G1 after', async () => {
+    const page = await h.open('/web/#example=ref-sphere-fillet');
+    const depth = (await history(page)).depth;
+    const d = await dragSurface(page, 'sphere', { steps: 30, pixels: 2 });
+    console.log(`# gizmo drag ${d.dragMs} ms: ${d.frames} frames (${d.fps.toFixed(0)}/s), longest gap ${d.maxGap.toFixed(0)} ms, ` +
+      `${d.solvesDuring} solves drawn, long tasks [${d.longTasks.join(', ')}]`);
+    assert.ok(d.solvesDuring >= 2, `the fillet was re-solved ${d.solvesDuring} times during the drag`);
+    assert.ok(d.maxGap < 250, `the page stopped painting for ${d.maxGap.toFixed(0)} ms`);
+    await page.waitForTimeout(600); // the drag's step rests
+    const s = await scene(page);
+    assert.ok(s.patches[2].placement.translate[0] > 0.02, JSON.stringify(s.patches[2].placement));
+    assert.equal((await history(page)).depth, depth + 1, 'one undo step for the drag');
+    const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
+    assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
+    await shoot(page, 'build-gizmo-drag-1280.png');
+    await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
+    assert.equal((await scene(page)).patches[2].placement, undefined);
     await page.close();
   });
 
