@@ -10,6 +10,7 @@ import { addSurface, libraryEntry } from './state/surface-library.js';
 import { addBlend, addFill } from './state/scene-join.js';
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
 import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
+import { messageOf } from './state/document.js';
 
 const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
 
@@ -161,7 +162,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   });
   doc.on('reverted', () => refresh());
   doc.on('refused', (err, edit) => {
-    if (edit.build) folder.say(`cannot ${edit.name}: ${err && err.message ? err.message : err}`, true);
+    if (edit.build) folder.say(`cannot ${edit.name}: ${messageOf(err)}`, true);
   });
   // The selected patch's own folders (its operator, ends, functions, net) open.
   function revealFolders(name) {

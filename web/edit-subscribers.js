@@ -2,6 +2,8 @@
 // place: the re-solve (at once, or once typing pauses), the panel's folders when the scene
 // changed shape, and the message of a refused edit. The undo step and the link follow the
 // solve (web/main.js: solveNow and applyResult).
+import { messageOf } from './state/document.js';
+
 export const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause
 
 export function subscribeToEdits(doc, { panel, status, scheduler }) {
@@ -14,7 +16,7 @@ export function subscribeToEdits(doc, { panel, status, scheduler }) {
     if (solve === 'typed') typingTimer = setTimeout(() => scheduler.request(), EXPRESSION_DEBOUNCE_MS);
     else if (solve === 'now') scheduler.request();
   });
-  doc.on('refused', (err, edit) => status.error(`cannot ${edit.name}: ${err && err.message ? err.message : err}`));
+  doc.on('refused', (err, edit) => status.error(`cannot ${edit.name}: ${messageOf(err)}`));
   // A checked edit the solver refused: the scene is back as it was; draw and show it again.
   doc.on('reverted', () => {
     panel.restoreScene(doc.state.scene);

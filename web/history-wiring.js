@@ -30,6 +30,7 @@ export function createHistoryWiring({ read, restore, camera, hooks }) {
   let timer = 0; // runs from a touched() until the next commit
   let unshown = false; // the current step is an opening that has not drawn yet
   let buttons = null; // { undo, redo } once addButtons() ran
+  let held = false; // an edit awaits the solver's verdict: it is no step before it is kept
 
   function showButtons() {
     if (!buttons) return;
@@ -41,7 +42,7 @@ export function createHistoryWiring({ read, restore, camera, hooks }) {
   function commit() {
     clearTimeout(timer);
     timer = 0;
-    if (!history.current()) return;
+    if (held || !history.current()) return;
     if (history.push(read())) {
       unshown = false;
       showButtons();
@@ -143,6 +144,19 @@ export function createHistoryWiring({ read, restore, camera, hooks }) {
       const changed = unshown ? history.replace(read()) : history.push(read());
       unshown = true;
       if (changed) showButtons();
+    },
+    /**
+     * An edit the solver judges (a picked blend) is in the scene: no step is recorded until
+     * release(kept): a kept edit becomes a step once the gesture rests; a refused one was
+     * taken back and leaves none.
+     */
+    hold() {
+      held = true;
+    },
+    release(kept) {
+      if (!held) return;
+      held = false;
+      if (kept) this.touched();
     },
     /** A solve was drawn: the step shown is no longer an opening that may give its place. */
     solved() {

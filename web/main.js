@@ -122,6 +122,9 @@ async function start() {
     read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
   });
   addToolbarButtons();
+  // An edit the solver judges is a step only once it is kept.
+  doc.on('judging', () => undoRedo.hold());
+  doc.on('judged', (kept) => undoRedo.release(kept));
   installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
   bezier.connect({ state, viewer, panel, doc, status });

@@ -14,7 +14,7 @@ import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
 import { encodeState } from '../../web/link/link-codec.js';
-import { dragSurface } from './gizmo-drag.mjs';
+import { dragSurface, orbitDrag } from './gizmo-drag.mjs';
 
 const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
 
@@ -141,6 +141,12 @@ describe('building a model in the page', { skip }, () => {
     const base = (await history(page)).depth;
     await addSurface(page, 'plane disc / annulus');
     await addSurface(page, 'cylinder');
+    const z = page.locator('#panel [data-placement="z"] input'); // cylinder1 is selected: its placement
+    await solving(page, async () => {
+      await z.fill('0.5');
+      await z.press('Enter');
+    });
+    await control(page, 'blend-continuity').locator('select').selectOption({ label: 'curvature (G2)' });
     await control(page, 'blend-a').locator('select').selectOption({ label: 'annulus1 · t0' });
     await control(page, 'blend-b').locator('select').selectOption({ label: 'cylinder1 · t0' });
     await solving(page, () => button(page, 'make the blend').click());
@@ -150,12 +156,17 @@ describe('building a model in the page', { skip }, () => {
     await page.locator('#panel .outliner').scrollIntoViewIfNeeded();
     await shoot(page, 'build-panel-390.png');
     await page.waitForTimeout(500); // the last step rests
-    assert.equal((await history(page)).depth, base + 3, 'one undo step per edit');
+    assert.equal((await history(page)).depth, base + 4, 'one undo step per edit');
+    const built = await scene(page);
+    assert.equal(built.patches[2].ends.u1.continuity, 'curvature');
+    assert.ok(checkLink(await waitLink(page)).report.ok);
+    await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
+    assert.deepEqual((await scene(page)).patches[1].placement.translate, [0, 0, 0.5]);
     for (const expected of [['annulus1', 'cylinder1'], ['annulus1'], []]) {
       await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
       assert.deepEqual(await names(page), expected);
     }
-    for (const expected of [['annulus1'], ['annulus1', 'cylinder1'], ['annulus1', 'cylinder1', 'blend1']]) {
+    for (const expected of [['annulus1'], ['annulus1', 'cylinder1'], ['annulus1', 'cylinder1'], ['annulus1', 'cylinder1', 'blend1']]) {
       await solving(page, () => page.locator('#toolbar [data-action="redo"]').click());
       assert.deepEqual(await names(page), expected);
     }
@@ -177,6 +188,11 @@ describe('building a model in the page', { skip }, () => {
     assert.deepEqual(s.patches[2].placement, { translate: [0.3, 0, 0], rotate: [10, 0, 0], scale: 1 });
     const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
     assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
+    // The certificate as the joins panel shows it.
+    const folder = page.locator('#panel [data-folder="joins"]');
+    await folder.locator('.title').first().click();
+    assert.match(await folder.locator('.joins-summary').textContent(), /^2 joins/);
+    assert.equal(await folder.locator('.joins-figure.bad').count(), 0);
     await shoot(page, 'build-moved-sphere-1280.png');
     await page.close();
   });
@@ -223,6 +239,46 @@ describe('building a model in the page', { skip }, () => {
     await page.waitForTimeout(200);
     assert.match(await page.locator('#panel .build-message').textContent(), /^cannot blend: /);
     assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    // A custom surface whose expression does not parse names the field and adds nothing.
+    await page.locator('#panel .build-folder .title', { hasText: 'Custom surface' }).click();
+    const x = control(page, 'custom-x').locator('input');
+    await x.fill('cos(v');
+    await x.press('Enter');
+    await page.locator('#panel .build-folder button', { hasText: 'add custom surface' }).click();
+    await page.waitForTimeout(200);
+    assert.match(await page.locator('#panel .build-message').textContent(), /^cannot add a custom surface: .*x.*\)/);
+    assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
+    await page.close();
+  });
+
+  it('a link whose placement flattens a surface is refused by name; the default example opens', async () => {
+    const s = JSON.parse(fs.readFileSync(path.join(REPO, 'examples', 'ref-sphere-fillet.json'), 'utf8'));
+    s.version = 4;
+    s.patches[2].placement = { scale: 0 };
+    const page = await h.open(`/web/#${await encodeState({ scene: s })}`);
+    const state = await hooks(page);
+    assert.match(state.notice, /^cannot open the link: .*patches\[2\]\.placement\.scale: a scale of 0 flattens the surface/);
+    await page.close();
+  });
+
+  it('a blend to a border where dS/dt vanishes shows the core\'s error beside the pick and adds nothing', async () => {
+    const surfaces = [
+      { name: 'a', kind: 'surface', t_range: [2, 3], v_range: [0, '2*pi'], x: 't*cos(v)', y: 't*sin(v)', z: '0' },
+      { name: 'c', kind: 'surface', t_range: [0, 1], v_range: [0, '2*pi'], x: 'cos(v)', y: 'sin(v)', z: '1 + t^2' },
+    ];
+    const page = await h.open(`/web/#${await encodeState({ scene: { format: 'pdesurf-scene', version: 4, patches: surfaces } })}`);
+    const depth = (await history(page)).depth;
+    await control(page, 'blend-a').locator('select').selectOption({ label: 'a · t0' });
+    await control(page, 'blend-b').locator('select').selectOption({ label: 'c · t0' });
+    await solving(page, () => button(page, 'make the blend').click());
+    await page.waitForFunction(() => /vanishes/.test(document.querySelector('#panel .build-message').textContent));
+    assert.match(await page.locator('#panel .build-message').textContent(),
+      /^cannot blend: InvalidField: patches\[2\]\.ends\.u1\.at: dS\/dt of 'c' vanishes on the trimline/);
+    await page.waitForFunction(() => window.__pdesurf.lastError === null, null, { timeout: 10_000 }); // the scene as it was solves again
+    assert.deepEqual(await names(page), ['a', 'c']);
+    await page.waitForTimeout(500);
+    assert.equal((await history(page)).depth, depth, 'a refused blend is no undo step');
+    await shoot(page, 'build-refused-1280.png');
     await page.close();
   });
 
@@ -294,12 +350,17 @@ describe('building a model in the page', { skip }, () => {
 
   it('dragging the sphere with the gizmo re-solves the fillet as it goes; one undo step; G1 after', async () => {
     const page = await h.open('/web/#example=ref-sphere-fillet');
+    // The baseline: the same drag orbiting (renders only). A software GL draws a frame of this
+    // view in 50-250 ms here; a solve drawn must not cost more than that (it cost 0.5-2 s
+    // of main thread before renders were coalesced to one per frame).
+    const orbit = await orbitDrag(page, { steps: 30, pixels: 2 });
     const depth = (await history(page)).depth;
     const d = await dragSurface(page, 'sphere', { steps: 30, pixels: 2 });
     console.log(`# gizmo drag ${d.dragMs} ms: ${d.frames} frames (${d.fps.toFixed(0)}/s), longest gap ${d.maxGap.toFixed(0)} ms, ` +
-      `${d.solvesDuring} solves drawn, long tasks [${d.longTasks.join(', ')}]`);
+      `${d.solvesDuring} solves drawn, long tasks [${d.longTasks.join(', ')}]; orbiting: ${orbit.fps.toFixed(0)} frames/s, longest gap ${orbit.maxGap.toFixed(0)} ms`);
     assert.ok(d.solvesDuring >= 2, `the fillet was re-solved ${d.solvesDuring} times during the drag`);
-    assert.ok(d.maxGap < 250, `the page stopped painting for ${d.maxGap.toFixed(0)} ms`);
+    assert.ok(d.maxGap < 2 * orbit.maxGap + 50, `the page stopped painting for ${d.maxGap.toFixed(0)} ms (orbiting: ${orbit.maxGap.toFixed(0)} ms)`);
+    assert.ok(d.fps > orbit.fps / 2, `${d.fps.toFixed(1)} frames/s while dragging the surface, ${orbit.fps.toFixed(1)} while orbiting`);
     await page.waitForTimeout(600); // the drag's step rests
     const s = await scene(page);
     assert.ok(s.patches[2].placement.translate[0] > 0.02, JSON.stringify(s.patches[2].placement));

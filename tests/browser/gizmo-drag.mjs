@@ -22,12 +22,9 @@ async function findArrow(page) {
   throw new Error('no x arrow found on the gizmo');
 }
 
-export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
-  await page.locator(`#panel [data-patch="${name}"] [data-action="select"]`).click();
-  await page.locator('#panel [data-placement="gizmo"] select').selectOption('move');
-  const at = await findArrow(page);
-  const solvesBefore = await page.evaluate(() => window.__pdesurf.solveCount);
-  await page.evaluate(() => {
+/** Count frames from now on (requestAnimationFrame), the longest gap and long tasks. */
+export function watchFrames(page) {
+  return page.evaluate(() => {
     const w = { frames: 0, maxGap: 0, last: performance.now(), longTasks: [] };
     const tick = (t) => {
       w.frames++;
@@ -40,6 +37,45 @@ export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
       .observe({ type: 'longtask' });
     window.__frames = w;
   });
+}
+
+/** Stop counting: { frames, maxGap, longTasks, solves }. */
+export function stopFrames(page) {
+  return page.evaluate(() => {
+    window.__frames.stop = true;
+    return { frames: window.__frames.frames, maxGap: window.__frames.maxGap, longTasks: window.__frames.longTasks, solves: window.__pdesurf.solveCount };
+  });
+}
+
+// One pointer move per frame along (dx, dy) from `at`, the button held.
+async function drag(page, at, steps, pixels) {
+  await page.mouse.move(at.x, at.y);
+  await page.mouse.down();
+  const t0 = Date.now();
+  for (let k = 1; k <= steps; k++) {
+    await page.mouse.move(at.x + pixels * k * at.dx, at.y + pixels * k * at.dy);
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+  }
+  const ms = Date.now() - t0;
+  return ms;
+}
+
+/** The same drag orbiting the camera (renders only, no solve): the frames' baseline. */
+export async function orbitDrag(page, { steps = 60, pixels = 2 } = {}) {
+  const box = await page.locator('#viewport canvas').boundingBox();
+  await watchFrames(page);
+  const dragMs = await drag(page, { x: box.x + box.width * 0.3, y: box.y + box.height * 0.7, dx: 1, dy: 0 }, steps, pixels);
+  const during = await stopFrames(page);
+  await page.mouse.up();
+  return { dragMs, ...during, fps: (1000 * during.frames) / dragMs };
+}
+
+export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
+  await page.locator(`#panel [data-patch="${name}"] [data-action="select"]`).click();
+  await page.locator('#panel [data-placement="gizmo"] select').selectOption('move');
+  const at = await findArrow(page);
+  const solvesBefore = await page.evaluate(() => window.__pdesurf.solveCount);
+  await watchFrames(page);
   await page.mouse.down();
   const t0 = Date.now();
   for (let k = 1; k <= steps; k++) {
@@ -47,10 +83,7 @@ export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   }
   const dragMs = Date.now() - t0;
-  const during = await page.evaluate(() => {
-    window.__frames.stop = true;
-    return { frames: window.__frames.frames, maxGap: window.__frames.maxGap, longTasks: window.__frames.longTasks, solves: window.__pdesurf.solveCount };
-  });
+  const during = await stopFrames(page);
   await page.mouse.up();
   return { dragMs, frames: during.frames, fps: (1000 * during.frames) / dragMs, maxGap: during.maxGap,
     longTasks: during.longTasks, solvesDuring: during.solves - solvesBefore };

@@ -15,7 +15,11 @@
 //              reported as this edit's refusal
 // }
 // Signals: 'changed' (edit, result), 'refused' (error, edit), 'selection' (name | null),
+// 'judging' (edit) when a checked edit awaits the solver, 'judged' (kept) with its verdict,
 // 'reverted' (edit) after a checked edit the solver refused.
+
+/** A refusal's text: a solver error carries its code (InvalidField, …), an edit's own is an Error. */
+export const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
 
 export function createDocument(state) {
   const subscribers = new Map();
@@ -55,7 +59,10 @@ export function createDocument(state) {
         emit('refused', error, edit);
         return { ok: false, error };
       }
-      if (edit.checked) pendingCheck = { edit, before };
+      if (edit.checked) {
+        pendingCheck = { edit, before };
+        emit('judging', edit);
+      }
       emit('changed', edit, result);
       return { ok: true, result };
     },
@@ -64,7 +71,9 @@ export function createDocument(state) {
     solved(ok, error) {
       const check = pendingCheck;
       pendingCheck = null;
-      if (ok || !check) return false;
+      if (!check) return false;
+      emit('judged', ok);
+      if (ok) return false;
       restore(check.before);
       emit('refused', error, check.edit);
       emit('reverted', check.edit);
@@ -73,6 +82,7 @@ export function createDocument(state) {
 
     /** Another scene opened (or an undo put one back): no edit is pending any more. */
     reset() {
+      if (pendingCheck) emit('judged', false);
       pendingCheck = null;
       doc.select(null);
     },
