@@ -16,7 +16,7 @@ const OLD_MODULE = 'this solver module computes no curvature; rebuild it (script
 const NO_REPORT = 'this solver module gives no join report; rebuild it (scripts/build-wasm)';
 
 /** { panel, viewer, hasAnalysis (the solver has solveSceneWith), requestSolve() } */
-export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve }) {
+export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestSolve }) {
   const settings = defaultAnalysisSettings();
   const controls = buildAnalysisFolder(panel.gui, settings, onChange);
   const joins = buildJoinsFolder(panel.gui, onToggle, onJoinsOpen);
@@ -91,7 +91,7 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
     applyJoins();
   }
 
-  return {
+  const api = {
     settings,
     /** What to ask the module for in the next solve. */
     solveOptions() {
@@ -136,4 +136,8 @@ export function createAnalysisWiring({ panel, viewer, hasAnalysis, requestSolve 
       };
     },
   };
+  // A feature of the document: it hears of new scenes and drawn solves itself.
+  doc.on('opened', () => api.newScene());
+  doc.on('drawn', (result, job) => api.solved(result, job.options));
+  return api;
 }

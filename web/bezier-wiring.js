@@ -84,6 +84,9 @@ export function createBezierWiring() {
     pointOf,
     connect(parts) {
       ctx = parts;
+      // A feature of the document: it hears of new scenes and solves itself.
+      ctx.doc.on('opened', () => this.reset());
+      ctx.doc.on('solved', (result) => this.solvedPatches(result.patches));
     },
     /** Before the viewer draws a solve: keep its resolved numbers for pointOf. */
     solvedPatches(patches) {

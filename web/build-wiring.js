@@ -14,7 +14,7 @@ import { messageOf } from './state/document.js';
 
 const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
 
-/** { doc, panel, viewer, status, hooks, openBuilt(scene, title) } */
+/** { doc, panel, viewer, hooks, openBuilt(scene, title) } */
 export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   const { state } = doc;
   let drawn = []; // the last good solve's patches
@@ -178,9 +178,14 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     revealFolders(name);
   });
 
+  // New scenes, undo steps within one, and drawn solves: the lists and the gizmo follow.
+  doc.on('opened', () => api.sceneShown());
+  doc.on('restored', () => api.sceneShown());
+  doc.on('drawn', (result, job) => api.drawn(result.patches, job.scene));
+
   hooks.build = () => ({ pickMode, gizmoMode, selection: doc.selection(), hidden: [...hidden] });
 
-  return {
+  const api = {
     /** Another scene is on screen (opened, undone, redone): lists follow it. */
     sceneShown() {
       hidden.clear();
@@ -196,4 +201,5 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       if (doc.selection() && gizmoMode) attachGizmo(doc.selection());
     },
   };
+  return api;
 }

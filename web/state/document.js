@@ -40,6 +40,9 @@ export function createDocument(state) {
   const doc = {
     state,
 
+    /** Tell the subscribers of `signal` (the scene session's 'opened', 'solved', 'drawn', …). */
+    emit,
+
     /** Subscribe to a signal; returns the unsubscribe function. */
     on(signal, fn) {
       if (!subscribers.has(signal)) subscribers.set(signal, new Set());

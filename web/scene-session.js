@@ -1,0 +1,241 @@
+// The scene on screen and its solves: opening an example, a link, a file or a built scene;
+// putting back an undo step; sending the scene to the worker and drawing what comes back.
+// Features hear about it through the document's signals (web/state/document.js):
+//   'opened'  (scene, { exampleId, title })  another scene is on screen (fresh overlays)
+//   'restored' (scene)                       an undo or redo within the same scene
+//   'solved'  (result, job)                  a good solve, before it is drawn
+//   'drawn'   (result, job)                  after it is drawn
+// Opening and links stay explicit (share, files, history): they decide what a solve means.
+import { gridTopology } from './viewer/grid-topology.js';
+import { DEFAULT_GRID } from './state/scene-state.js';
+import { loadExampleScene } from './state/examples.js';
+import { readHash, writeExampleIdToHash, markHashShown, hashIsShown } from './state/hash.js';
+import { decodeFragment } from './link/link-codec.js';
+import { createSolveScheduler } from './state/solve-scheduler.js';
+import { messageOf } from './state/document.js';
+
+/**
+ * doc, solver (solver/solver-client.js) and relay ({ result, error }: where its answers go),
+ * viewer, panel, gallery, status, hooks, titleEl, examples (the index), fail(err);
+ * later attach({ share, files, history, solveOptions }).
+ */
+export function createSceneSession({ doc, solver, relay, viewer, panel, gallery, status, hooks, titleEl, examples, fail }) {
+  const { state } = doc;
+  let parts = null; // { share, files, history, solveOptions } once attached
+  let sceneToken = 0; // a new scene (example or link): results for an older one are dropped
+  let loadToken = 0; // a slower fetch or decode of an earlier pick must not win
+  let fitPending = false; // frame the camera on the first good solve of an example
+  let cameraPending = null; // or restore a shared link's camera instead
+  let linkPending = false; // a link's scene that has not solved yet
+  let opening = false; // the next solve opens a scene (not a user's change)
+  let quiet = false; // the next solve only adds analysis data: not a user's edit
+  let notice = null; // shown instead of the solve summary once (e.g. a bad link)
+
+  // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
+  relay.result = applyResult;
+  relay.error = applyFailure;
+  hooks.solverRestarts = () => solver.restarts;
+  const scheduler = createSolveScheduler(solveNow);
+
+  // Another scene on screen: its panel, gallery entry and title, and the camera it comes
+  // with (else framed on its first solve); features reset on 'opened'.
+  function present(scene, exampleId, title, camera) {
+    panel.showScene(scene);
+    gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+    titleEl.textContent = title;
+    cameraPending = camera;
+    fitPending = !camera;
+    doc.emit('opened', scene, { exampleId, title });
+  }
+
+  // Shared by examples, links, files and built scenes: the scene becomes the page state.
+  function showScene(scene, { exampleId = null, title, camera = null }) {
+    sceneToken++;
+    parts.share.opening();
+    opening = true;
+    state.setScene(scene, exampleId);
+    doc.reset();
+    hooks.exampleId = exampleId;
+    present(scene, exampleId, title, camera);
+    scheduler.request();
+    parts.history.opened();
+    return sceneToken;
+  }
+
+  // An undo or redo: the snapshot's scene, grid and title come back and re-solve as an edit
+  // (the hash follows). The camera stays within a scene; another scene comes back with the
+  // view it was left with (`camera`), or framed.
+  function restoreScene({ sceneText, grid, exampleId, title }, camera) {
+    const scene = JSON.parse(sceneText);
+    const sameScene = exampleId === state.exampleId && title === titleEl.textContent;
+    sceneToken++;
+    loadToken++; // an example still loading would open over the restored state
+    opening = linkPending = fitPending = false;
+    cameraPending = null;
+    state.setScene(scene, exampleId);
+    doc.reset();
+    Object.assign(state.grid, grid);
+    panel.refreshGrid();
+    hooks.exampleId = exampleId;
+    if (sameScene) {
+      panel.restoreScene(scene); // overlays and the edited point stay
+      doc.emit('restored', scene);
+    } else present(scene, exampleId, title, camera);
+    scheduler.request();
+  }
+
+  // keepHash: a damaged link stays in the address bar (to be copied or fixed) while the
+  // default example shows.
+  async function openExample(id, { keepHash = false } = {}) {
+    let entry = examples.find((e) => e.id === id);
+    if (!entry) {
+      notice = `unknown example "${id}"; opened "${examples[0].title}" instead`;
+      entry = examples[0];
+      keepHash = true; // the link's text stays to be fixed
+    }
+    const token = ++loadToken;
+    linkPending = false;
+    status.info(`loading ${entry.title}…`);
+    let scene;
+    try {
+      scene = await loadExampleScene(entry);
+    } catch (err) {
+      if (token === loadToken) fail(err);
+      return;
+    }
+    if (token !== loadToken) return;
+    parts.share.opening(); // an encode still in flight must not overwrite the example's hash
+    if (!keepHash) writeExampleIdToHash(entry.id);
+    // An example opens as its file says, on the default grid.
+    Object.assign(state.grid, DEFAULT_GRID);
+    panel.refreshGrid();
+    const src = entry.source ? [entry.source.paper, entry.source.figure].filter(Boolean).join(', ') : '';
+    showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title });
+  }
+
+  // A link that cannot be read says why and opens the default example: never a blank page.
+  async function openLink(text) {
+    const token = ++loadToken;
+    status.info('opening the shared link…');
+    let linked;
+    try {
+      linked = await decodeFragment(text);
+    } catch (err) {
+      if (token !== loadToken) return;
+      notice = `cannot open the link: ${err && err.message ? err.message : err}`;
+      await openExample(examples[0].id, { keepHash: true });
+      return;
+    }
+    if (token !== loadToken) return;
+    Object.assign(state.grid, linked.grid || DEFAULT_GRID);
+    panel.refreshGrid();
+    linkPending = true;
+    const title = typeof linked.scene.title === 'string' && linked.scene.title ? linked.scene.title : 'untitled scene';
+    showScene(linked.scene, { title: `${title} (shared link)`, camera: linked.camera || null });
+  }
+
+  function openFromHash() {
+    markHashShown();
+    const h = readHash();
+    if (h.kind === 'state') return openLink(h.text);
+    return openExample(h.kind === 'example' ? h.id : examples[0].id);
+  }
+
+  // Sends the scene to the worker; the result comes back in applyResult (or applyFailure).
+  function solveNow() {
+    if (!state.scene) return;
+    const edited = !opening && !quiet;
+    opening = false;
+    quiet = false;
+    if (edited) parts.history.touched();
+    let text;
+    try {
+      text = state.text(); // a cyclic or too deep object throws here
+    } catch (err) {
+      applyFailure({ code: 'InvalidField', message: `the scene cannot be written as JSON: ${err.message}` }, { edited });
+      return;
+    }
+    const grid = { nu: state.grid.nu, nv: state.grid.nv };
+    solver.request({ scene: text, grid, options: { ...grid, ...parts.solveOptions() }, edited, token: sceneToken, requestedAt: performance.now() });
+  }
+
+  function applyFailure(err, job) {
+    hooks.solveCount++;
+    if (doc.solved(false, err)) return; // a checked edit (a picked blend) is undone and says why
+    if (parts.files.failed(err, job)) return; // an opened file's scene: the previous one comes back
+    if (linkPending) {
+      // The link decoded but its scene does not solve: nothing good to keep on screen.
+      linkPending = false;
+      notice = `cannot open the link: ${messageOf(err)}`;
+      openExample(examples[0].id, { keepHash: true });
+      return;
+    }
+    fail(err);
+    panel.showSolveError(err && err.message ? err.message : String(err));
+  }
+
+  function applyResult(result, job, ms) {
+    hooks.solveCount++;
+    // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
+    const topology = gridTopology(job.grid.nu, job.grid.nv);
+    for (const p of result.patches) {
+      p.uvs = topology.uvs;
+      p.indices = topology.indices;
+    }
+    linkPending = false;
+    doc.solved(true);
+    parts.history.solved();
+    state.noteSolved(result.patches);
+    doc.emit('solved', result, job);
+    viewer.setPatches(result.patches);
+    if (cameraPending) viewer.setCamera(cameraPending);
+    else if (fitPending) viewer.fit();
+    cameraPending = null;
+    fitPending = false;
+    doc.emit('drawn', result, job);
+    panel.showSolved(result.patches);
+    hooks.lastError = null;
+    if (!hooks.ready) hooks.readyAt = performance.now(); // first surface, from navigation start
+    // The page path of this solve (request to drawn) against the worker's own time.
+    hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid };
+    hooks.ready = true;
+    const { nu, nv } = job.grid;
+    const n = result.patches.length;
+    const summary = `${n} ${n === 1 ? 'patch' : 'patches'}, grid ${nu}×${nv}, solved in ${ms.toFixed(1)} ms`;
+    hooks.notice = notice;
+    if (notice) status.error(notice);
+    else status.info(summary);
+    notice = null;
+    parts.share.solved(job.scene, job.grid, summary, job.edited || parts.files.solved(job));
+  }
+
+  // A link pasted into the address bar or history navigation opens what it names;
+  // the page's own writes (replaceState fires no hashchange anyway) never re-open.
+  window.addEventListener('hashchange', () => {
+    if (!hashIsShown()) openFromHash();
+  });
+
+  return {
+    scheduler,
+    attach(p) {
+      parts = p;
+    },
+    showScene,
+    restoreScene,
+    openExample,
+    openFromHash,
+    /** A scene built in the page (new scene): the user's, so its link is written at its first solve. */
+    openBuilt(scene, title) {
+      showScene(scene, { title });
+      opening = false;
+    },
+    /** A solve that only adds analysis data: not a user's edit. */
+    requestQuiet() {
+      quiet = true;
+      scheduler.request();
+    },
+    setNotice(text) {
+      notice = text;
+    },
+  };
+}
