@@ -69,6 +69,14 @@ function checkLink(url) {
   return { scene: JSON.parse(decoded.stdout), report: JSON.parse(checked.stdout) };
 }
 
+// Close a page once its last edit's link is written (the deflater loads on first use; closing
+// before would abort that request). A page whose edits were all refused writes none.
+async function settle(page) {
+  await page.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 3000 }).catch(() => {});
+  await page.waitForTimeout(300);
+  await page.close();
+}
+
 async function waitLink(page) {
   await page.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 10_000 });
   await page.waitForTimeout(400); // the hash sync settles
@@ -101,7 +109,10 @@ describe('building a model in the page', { skip }, () => {
     assert.deepEqual(await names(page), []);
     assert.equal((await hooks(page)).lastError, null);
     await addSurface(page, 'plane disc / annulus');
+    const one = (await hooks(page)).solveCount;
     await addSurface(page, 'cylinder');
+    await page.waitForTimeout(300);
+    assert.equal((await hooks(page)).solveCount, one + 1, 'adding a surface draws within one solve');
     assert.deepEqual(await names(page), ['annulus1', 'cylinder1']);
     // Placed by numbers in its folder: up by 0.5.
     await page.locator('#panel [data-patch="cylinder1"] [data-action="select"]').click(); // selected already: stays
@@ -118,7 +129,9 @@ describe('building a model in the page', { skip }, () => {
     const before = await hooks(page);
     await page.waitForTimeout(200);
     assert.equal((await hooks(page)).solveCount, before.solveCount, 'one pick does not solve');
-    await solving(page, () => clickBorder(page, 'cylinder1', 't0'));
+    const picked = await solving(page, () => clickBorder(page, 'cylinder1', 't0'));
+    await page.waitForTimeout(300);
+    assert.equal((await hooks(page)).solveCount, picked.solveCount, 'a picked blend draws within one solve');
     const built = await scene(page);
     assert.deepEqual(built.patches.map((p) => p.name), ['annulus1', 'cylinder1', 'blend1']);
     assert.deepEqual(built.patches[2].ends.u0, { surface: 'annulus1', at: 't0', continuity: 'curvature', power: 1 });
@@ -131,7 +144,7 @@ describe('building a model in the page', { skip }, () => {
     assert.equal(report.joins.length, 2, JSON.stringify(report.joins));
     assert.ok(report.joins.every((j) => j.ok), JSON.stringify(report.joins));
     assert.ok(levels.every((l) => l === 'G2' || l === 2), JSON.stringify(levels));
-    await page.close();
+    await settle(page);
   });
 
   it('390×844: the same through the panel only, then undo back to empty and redo', async () => {
@@ -170,7 +183,7 @@ describe('building a model in the page', { skip }, () => {
       await solving(page, () => page.locator('#toolbar [data-action="redo"]').click());
       assert.deepEqual(await names(page), expected);
     }
-    await page.close();
+    await settle(page);
   });
 
   it('a sphere filleted into a plane follows the moved sphere and stays G1', async () => {
@@ -194,7 +207,7 @@ describe('building a model in the page', { skip }, () => {
     assert.match(await folder.locator('.joins-summary').textContent(), /^2 joins/);
     assert.equal(await folder.locator('.joins-figure.bad').count(), 0);
     await shoot(page, 'build-moved-sphere-1280.png');
-    await page.close();
+    await settle(page);
   });
 
   it('deleting a surface a blend names asks, and both answers work; undo restores', async () => {
@@ -213,7 +226,7 @@ describe('building a model in the page', { skip }, () => {
     assert.equal(s.patches[0].ends.u1, undefined);
     assert.ok(s.patches[0].boundary, 'the detached end is typed');
     assert.equal((await hooks(page)).lastError, null);
-    await page.close();
+    await settle(page);
   });
 
   it('bad input: markup names stay text, duplicates are refused by name, a same-border pick adds nothing', async () => {
@@ -248,7 +261,7 @@ describe('building a model in the page', { skip }, () => {
     await page.waitForTimeout(200);
     assert.match(await page.locator('#panel .build-message').textContent(), /^cannot add a custom surface: .*x.*\)/);
     assert.deepEqual(await names(page), ['fillet', '<b>flat</b>', 'sphere']);
-    await page.close();
+    await settle(page);
   });
 
   it('a link whose placement flattens a surface is refused by name; the default example opens', async () => {
@@ -258,7 +271,7 @@ describe('building a model in the page', { skip }, () => {
     const page = await h.open(`/web/#${await encodeState({ scene: s })}`);
     const state = await hooks(page);
     assert.match(state.notice, /^cannot open the link: .*patches\[2\]\.placement\.scale: a scale of 0 flattens the surface/);
-    await page.close();
+    await settle(page);
   });
 
   it('a blend to a border where dS/dt vanishes shows the core\'s error beside the pick and adds nothing', async () => {
@@ -279,7 +292,7 @@ describe('building a model in the page', { skip }, () => {
     await page.waitForTimeout(500);
     assert.equal((await history(page)).depth, depth, 'a refused blend is no undo step');
     await shoot(page, 'build-refused-1280.png');
-    await page.close();
+    await settle(page);
   });
 
   it('a hole filled by picking four borders; deleting a strip the fill names, both answers', async () => {
@@ -313,7 +326,7 @@ describe('building a model in the page', { skip }, () => {
     assert.deepEqual(detached.patches.map((p) => p.name), ['strip0', 'strip2', 'strip3', 'fill1']);
     assert.equal(Object.keys(detached.patches[3].borders || {}).length, 3, 'the deleted strip\'s border became typed rings');
     assert.equal((await hooks(page)).lastError, null);
-    await page.close();
+    await settle(page);
   });
 
   it('a curve trimline shaped by five values becomes a trigonometric τ(v) and stays G1', async () => {
@@ -345,7 +358,7 @@ describe('building a model in the page', { skip }, () => {
     assert.ok(joins.length === 2 && joins.every((j) => j.ok), JSON.stringify(joins));
     await values.scrollIntoViewIfNeeded();
     await shoot(page, 'build-tau-values-1280.png');
-    await page.close();
+    await settle(page);
   });
 
   it('dragging the sphere with the gizmo re-solves the fillet as it goes; one undo step; G1 after', async () => {
@@ -370,7 +383,7 @@ describe('building a model in the page', { skip }, () => {
     await shoot(page, 'build-gizmo-drag-1280.png');
     await solving(page, () => page.locator('#toolbar [data-action="undo"]').click());
     assert.equal((await scene(page)).patches[2].placement, undefined);
-    await page.close();
+    await settle(page);
   });
 
   it('left no console or page errors', () => {

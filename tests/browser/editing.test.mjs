@@ -40,7 +40,9 @@ describe('editing expressions and parameters', { skip }, () => {
     assert.equal(await field(FORCE).locator('input').inputValue(), '0');
     assert.equal(await field(PLANE_Z).locator('input').inputValue(), '0');
     assert.equal(await page.locator('#panel [data-functions="blend"] [data-expr]').count(), 15);
-    assert.equal(await page.locator('#panel [data-surface] [data-expr]').count(), 6);
+    // Per surface: x, y, z and the two ends of t_range and of v_range.
+    assert.equal(await page.locator('#panel [data-surface] [data-expr]').count(), 14);
+    assert.equal(await field('patches[1].v_range[1]').locator('input').inputValue(), '2*pi');
   });
 
   it('an invalid expression shows its error inline and in the status line, and keeps the surfaces', async () => {

@@ -366,6 +366,9 @@ describe('ends by reference in the page', { skip }, () => {
     assert.equal(await phone.evaluate(() => window.__pdesurf.lastError), null);
     await phone.locator('#panel [data-end="fillet.u1"]').scrollIntoViewIfNeeded();
     await shoot(phone, 'ends-phone.png');
+    // The edit's link is written (its deflater loads on first use): closing before would
+    // abort that request.
+    await phone.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 10_000 });
     await phone.close();
   });
 

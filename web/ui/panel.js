@@ -81,9 +81,12 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       fixedToEnd();
     },
 
-    /** Folders (their elements) built outside that stay right after share (the File folder). */
+    /**
+     * Folders (their elements) built outside that stay at the top, after share and the
+     * folders kept there before them (File, then Build and Model), before the grid.
+     */
     keepAfterShare(...elements) {
-      top.splice(top.indexOf(share.folder) + 1, 0, ...elements);
+      top.splice(top.indexOf(gridFolder.domElement), 0, ...elements);
       fixedToEnd();
     },
 
