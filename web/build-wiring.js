@@ -178,6 +178,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     revealFolders(name);
   });
 
+  // A click on a patch in the view selects it; on the background, nothing is selected.
+  viewer.onPatchClick((name) => doc.select(name));
+
   // New scenes, undo steps within one, and drawn solves: the lists and the gizmo follow.
   doc.on('opened', () => api.sceneShown());
   doc.on('restored', () => api.sceneShown());

@@ -114,9 +114,17 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
   b.lambda = j.contains("lambda") ? r.number(j["lambda"], path + ".lambda") : 0.0;
   b.gamma = j.contains("gamma") ? r.number(j["gamma"], path + ".gamma") : 0.0;
   const std::string np = path + ".normals";
+  BezierNormalField& f = b.normals;
+  // Version 4: a patch without guiding normals (a fill by its borders) has none to weigh.
+  if (!j.contains("normals") && version >= 4) {
+    if (b.lambda != 0.0)
+      fail(ErrorCode::InvalidField, path + ".lambda", "lambda weighs the guiding normals, and this patch has none: give \"normals\" or set lambda to 0");
+    f.n1 = f.m1 = 0;
+    f.vectors = {Eigen::Vector3d(0, 0, 1)};  // weighed by lambda = 0: no effect
+    return;
+  }
   const json& nj = require(j, "normals", path);
   if (!nj.is_object()) fail(ErrorCode::InvalidField, np, "expected an object");
-  BezierNormalField& f = b.normals;
   if (nj.contains("degree")) {
     allowOnly(nj, np, {"degree", "vectors"});
     const auto d = pair(nj["degree"], np + ".degree", 0, 24);

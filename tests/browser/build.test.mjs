@@ -188,7 +188,14 @@ describe('building a model in the page', { skip }, () => {
 
   it('a sphere filleted into a plane follows the moved sphere and stays G1', async () => {
     const page = await h.open('/web/#example=ref-sphere-fillet');
-    await page.locator('#panel [data-patch="sphere"] [data-action="select"]').click();
+    // Selected by a click on it in the view (the top of the sphere: nothing in front of it).
+    const top = await page.evaluate(() => {
+      const { nu, nv } = window.__pdesurf.lastSolve;
+      return window.__pdesurf.vertexScreen('sphere', Math.round(nv / 4) * (nu + 1) + nu - 2);
+    });
+    await page.mouse.click(top.x, top.y);
+    assert.equal((await page.evaluate(() => window.__pdesurf.build())).selection, 'sphere');
+    assert.equal(await page.locator('#panel .outliner li.selected').getAttribute('data-patch'), 'sphere');
     for (const [key, value] of [['x', '0.3'], ['rx', '10']]) {
       const input = page.locator(`#panel [data-placement="${key}"] input`).first();
       await solving(page, async () => {

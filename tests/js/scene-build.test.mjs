@@ -14,7 +14,7 @@ import {
   setPlacement, placePoint, addBlend, addFill, trigCurveFromSamples, addSurface, lowestVersion,
 } from '../../web/state/scene-build.js';
 import { compile, parameterValues } from '../../web/state/expr-text.js';
-import { check, forCore, refuses, V4, NO_V4, NO_BORDERS } from './build-helpers.mjs';
+import { check, refuses } from './build-helpers.mjs';
 
 const root = new URL('../../', import.meta.url);
 const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
@@ -22,7 +22,7 @@ const solver = await loadSolver({
   moduleUrl: new URL('pdesurf.js', wasmDir).href,
   wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
 });
-const solve = (scene) => solver.solve(JSON.stringify(forCore(scene)), { nu: 16, nv: 24 }).patches;
+const solve = (scene) => solver.solve(JSON.stringify(scene), { nu: 16, nv: 24 }).patches;
 
 /** Annulus, cylinder and the blend between them (the Add menu's first fillet). */
 function fillet(continuity = 'tangency') {
@@ -66,7 +66,7 @@ describe('new scene and names', () => {
     assert.equal(scene.patches[3].borders.v0.surface, '<b>x</b>');
     renamePatch(scene, 'fillet', 'fillet'); // the same name: nothing to do
     scene.patches.pop();
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('renamePatch refuses a duplicate (naming it), an empty, long or multi-line name, an unknown patch', () => {
@@ -79,7 +79,7 @@ describe('new scene and names', () => {
     refuses(scene, () => renamePatch(scene, 'cylinder1', 'a\ud800'), /lone surrogate/);
     refuses(scene, () => renamePatch(scene, 'nope', 'x'), /no patch named "nope"/);
     renamePatch(scene, 'cylinder1', 'é'.repeat(32)); // 64 bytes: allowed
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 });
 
@@ -98,7 +98,7 @@ describe('duplicate', () => {
     assert.equal(copy.meets, undefined, 'meets names the original\'s blend end');
     assert.deepEqual(scene.parameters.cylinder2_r, before.cylinder1_r);
     assert.equal(scene.parameters.shared_2, undefined);
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('with { share: true } the copy follows the original\'s sliders; a blend copy keeps its ends', () => {
@@ -109,7 +109,7 @@ describe('duplicate', () => {
     assert.deepEqual(scene.patches[1], { ...scene.patches[0], name: 'annulus2' });
     assert.equal(duplicatePatch(scene, 'blend1'), 'blend2');
     assert.deepEqual(scene.patches.find((p) => p.name === 'blend2').ends, scene.patches.find((p) => p.name === 'blend1').ends);
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('refuses a blend whose copy would trim a surface along a second curve', () => {
@@ -140,7 +140,7 @@ describe('delete', () => {
     assert.deepEqual(deletePatch(scene, 'cylinder1', { dependents: 'delete' }), ['cylinder1', 'blend1']);
     assert.deepEqual(scene.patches.map((p) => p.name), ['annulus1']);
     assert.equal(scene.patches[0].meets, undefined);
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('a patch without dependents just goes', () => {
@@ -161,7 +161,7 @@ describe('delete', () => {
       const after = solve(scene).find((p) => p.name === 'blend1').positions;
       const worst = before.reduce((m, x, k) => Math.max(m, Math.abs(x - after[k])), 0);
       assert.ok(worst < 1e-5, `moved by ${worst}`);
-      const { status, stderr } = check(forCore(scene));
+      const { status, stderr } = check(scene);
       assert.equal(status, 0, stderr);
     });
   }
@@ -170,12 +170,12 @@ describe('delete', () => {
     const scene = newScene();
     addSurface(scene, 'cylinder');
     addBlend(scene, { surface: 'cylinder1', at: 't0' }, { surface: 'cylinder1', at: 't1' });
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
     const solved = solve(scene);
     deletePatch(scene, 'cylinder1', { dependents: 'detach', solved });
     assert.equal(scene.patches[0].ends, undefined);
     assert.equal(scene.patches[0].operator.order, 4);
-    const { status, stderr } = check(forCore(scene));
+    const { status, stderr } = check(scene);
     assert.equal(status, 0, stderr);
   });
 
@@ -223,7 +223,7 @@ describe('parameters no patch uses', () => {
     refuses(scene, () => removeParameter(scene, 'nope'), /no parameter "nope"/);
     for (const name of unusedParameters(scene)) removeParameter(scene, name);
     assert.deepEqual(unusedParameters(scene), []);
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 });
 
@@ -263,7 +263,7 @@ describe('placement', () => {
     refuses(scene, () => setPlacement(scene, 'blend1', { scale: 2 }), /^blend1\.placement: only "surface" patches/);
   });
 
-  it('a placed surface is accepted and its blend certified by a version-4 core', { skip: NO_V4 }, () => {
+  it('a placed surface is accepted and its blend certified by a version-4 core', () => {
     const scene = fillet();
     setPlacement(scene, 'cylinder1', { translate: [0.2, 0, 'annulus1_r0 - 1.5'], rotate: [5, 0, 0], scale: 1.2 });
     const { status, report, stderr } = check(scene);
@@ -289,7 +289,7 @@ describe('blends', () => {
     // 6.283185307179586 is 2*pi: the same numbers, no parameter that could move them apart.
     scene.patches[0].v_range = [0, 2 * Math.PI];
     addBlend(scene, { surface: 'annulus1', at: 't1' }, { surface: 'cylinder1', at: 't1' }, { name: 'third' });
-    const { report, stderr } = check(forCore(scene));
+    const { report, stderr } = check(scene);
     assert.ok(report, `the core accepts it: ${stderr}`); // blend2's flip folds it back (that is what flip is for), so no "ok" here
   });
 
@@ -300,7 +300,7 @@ describe('blends', () => {
     const samples = [0, 1, 2, 3, 4, 5, 6, 7].map((k) => 2.2 + 0.15 * Math.cos(2 * Math.PI * k / 8) - 0.05 * Math.sin(4 * Math.PI * k / 8));
     const { text } = trigCurveFromSamples(samples, [0, '2*pi'], 3);
     addBlend(scene, { surface: 'annulus1', at: { t: text, replaces: 't0' } }, { surface: 'cylinder1', at: 't0' });
-    const { status, report, stderr } = check(forCore(scene));
+    const { status, report, stderr } = check(scene);
     assert.equal(status, 0, stderr);
     assert.ok(report.joins.every((j) => j.ok && j.level === 'G1'));
   });
@@ -383,7 +383,7 @@ describe('fills', () => {
     refuses(scene, () => addFill(scene, ring, ring.map((b) => borderEnds(scene, b.surface, b.at))), /^borders\[0\]: t0 of "annulus1" is closed/);
   });
 
-  it('a fill is accepted and its borders certified by a version-4 core', { skip: NO_BORDERS }, () => {
+  it('a fill is accepted and its borders certified by a version-4 core', () => {
     const scene = frame();
     const borders = ['south', 'east', 'north', 'west'].map((surface) => ({ surface, at: 't0' }));
     addFill(scene, borders, borders.map((b) => borderEnds(scene, b.surface, b.at)));
@@ -419,11 +419,5 @@ describe('trigonometric trimlines', () => {
     assert.throws(() => trigCurveFromSamples([1, 2], [0, 'q']), /vRange\[1\]: col 1: unknown parameter 'q'/);
     assert.throws(() => trigCurveFromSamples([[1, 1], [1, 2], [1, 3]], [0, 6]), /do not determine/);
     assert.throws(() => trigCurveFromSamples([1, 2], [0, 1], -1), /maxTerms/);
-  });
-});
-
-describe('the core on this build', () => {
-  it('reads version 4 (placement, fill borders) — or these checks are skipped', { skip: V4 ? false : NO_V4 }, () => {
-    assert.ok(V4);
   });
 });

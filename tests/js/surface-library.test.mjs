@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { SURFACE_LIBRARY, addSurface, libraryEntry } from '../../web/state/surface-library.js';
 import { newScene, addBlend } from '../../web/state/scene-build.js';
 import { PARAMETER_NAME, RESERVED } from '../../web/state/expr-text.js';
-import { check, forCore, rng, refuses } from './build-helpers.mjs';
+import { check, rng, refuses } from './build-helpers.mjs';
 
 const closedKinds = SURFACE_LIBRARY.filter((e) => e.closed);
 const openKinds = SURFACE_LIBRARY.filter((e) => !e.closed);
@@ -15,7 +15,7 @@ const LEVEL = { tangency: 'G1', curvature: 'G2' };
 
 /** The certificate's verdict on each join, with the promise it had to keep. */
 function joinsCertified(scene, continuity, what) {
-  const { report, stderr } = check(forCore(scene));
+  const { report, stderr } = check(scene);
   assert.ok(report, `${what}: the core refused the scene: ${stderr}`);
   assert.equal(report.joins.length, 2, what);
   for (const j of report.joins) {
@@ -56,7 +56,7 @@ describe('library entries', () => {
       }
       // v spans [0, 2π] on the closed families, [-1, 1] on the open ones.
       assert.deepEqual(patch.v_range, e.closed ? [0, '2*pi'] : [-1, 1]);
-      const { status, stderr } = check(forCore(scene));
+      const { status, stderr } = check(scene);
       assert.equal(status, 0, stderr);
     });
   }
@@ -72,7 +72,7 @@ describe('library entries', () => {
     addSurface(scene, 'cylinder');
     assert.equal(scene.parameters.cylinder3_r.value, 7);
     assert.equal(scene.patches[2].x, 'cylinder3_r2*cos(v)');
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('a name with markup is stored as text; its parameters get an identifier prefix', () => {
@@ -80,7 +80,7 @@ describe('library entries', () => {
     assert.equal(addSurface(scene, 'sphere', { name: '<b>x</b>' }), '<b>x</b>');
     assert.equal(scene.patches[0].name, '<b>x</b>');
     assert.ok(Object.keys(scene.parameters).every((n) => n.startsWith('b_x_b_') && PARAMETER_NAME.test(n)));
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('explicit surfaces take f(x, y) with the entry\'s keys; custom takes its expressions', () => {
@@ -91,7 +91,7 @@ describe('library entries', () => {
     assert.equal(scene.patches[1].z, 'explicit_disc1_a*sin((t*cos(v))) + (t*sin(v))');
     addSurface(scene, 'custom', { x: 't', y: 'v', z: 't*v', t_range: [0, 2], v_range: [-1, '1'] });
     assert.deepEqual(scene.patches[2], { name: 'custom1', kind: 'surface', t_range: [0, 2], v_range: [-1, '1'], x: 't', y: 'v', z: 't*v' });
-    assert.equal(check(forCore(scene)).status, 0);
+    assert.equal(check(scene).status, 0);
   });
 
   it('refuses, naming the field, and changes nothing', () => {
@@ -122,7 +122,7 @@ describe('library surfaces blended by reference', () => {
         const other = addSurface(scene, e.id);
         addBlend(scene, { surface: plane, at: 't0' }, { surface: other, at: 't0' }, { continuity });
         joinsCertified(scene, continuity, e.id);
-        const { status, stderr } = check(forCore(scene));
+        const { status, stderr } = check(scene);
         assert.equal(status, 0, `${e.id}: ${stderr}`);
       }
     });
@@ -144,7 +144,7 @@ describe('library surfaces blended by reference', () => {
     addSurface(scene, 'annulus');
     addSurface(scene, 'cylinder');
     assert.equal(addBlend(scene, { surface: 'annulus1', at: 't0' }, { surface: 'cylinder1', at: 't0' }), 'blend1');
-    const { status, report } = check(forCore(scene), 64);
+    const { status, report } = check(scene, 64);
     assert.equal(status, 0);
     assert.equal(report.crossings.length, 0);
     assert.ok(report.joins.every((j) => j.level === 'G1' && j.ok && !j.fold));

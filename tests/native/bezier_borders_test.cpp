@@ -5,6 +5,8 @@
 // parameter, circular borders are met to the fit's accuracy, and bad references are named.
 #include <doctest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -291,4 +293,22 @@ TEST_CASE("borders by reference: a typed net keeps the rings of the edges not gi
     }
   CHECK(same < 1e-12);  // and u0's, derived, agree with Fig. 4's
   CHECK(certify(j).ok);
+}
+
+TEST_CASE("borders by reference: version 4 may leave the guiding normals out (lambda 0 only)") {
+  json withField = holeScene(Hole{});
+  json without = withField;
+  without["patches"][0].erase("normals");
+  const Scene a = parseScene(withField.dump()), b = parseScene(without.dump());
+  const auto sa = solveScene(a), sb = solveScene(b);
+  const SolvedPatch& fa = *std::find_if(sa.begin(), sa.end(), [](const SolvedPatch& p) { return p.patch->name == "fill"; });
+  const SolvedPatch& fb = *std::find_if(sb.begin(), sb.end(), [](const SolvedPatch& p) { return p.patch->name == "fill"; });
+  REQUIRE(fa.controlNet.size() == fb.controlNet.size());
+  for (size_t k = 0; k < fa.controlNet.size(); ++k) CHECK((fa.controlNet[k] - fb.controlNet[k]).norm() == 0.0);
+  CHECK(certify(without).ok);
+  without["patches"][0]["lambda"] = 2;
+  CHECK(errorOf(without) == "InvalidField: patches[0].lambda: lambda weighs the guiding normals, and this patch has none: give \"normals\" or set lambda to 0");
+  json v3 = json::parse(readText(examplePath("wu2015-fig4.json")));  // version 2: normals required
+  v3["patches"][0].erase("normals");
+  CHECK(errorOf(v3).rfind("InvalidField: patches[0]", 0) == 0);
 }

@@ -197,8 +197,7 @@ export function addFill(scene, borders, endpoints, options = {}) {
   scene.patches.push({
     name, kind: 'bezier', energy, degree: [...degree],
     borders: { v0: out.v0, u1: out.u1, v1: out.v1, u0: out.u0 },
-    // λ = 0: the guiding normals do nothing, but the core requires a field.
-    normals: { degree: [0, 0], vectors: [[0, 0, 1]] },
+    // No guiding normals (version 4, λ = 0): the fill is the energy's, between its borders.
   });
   return name;
 }

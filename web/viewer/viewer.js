@@ -12,6 +12,7 @@ import { createJoinHighlight } from './join-highlight.js';
 import { createBorderPicker } from './border-picker.js';
 import { createPlacementGizmo } from './placement-gizmo.js';
 import { createPatchMarks } from './patch-marks.js';
+import { createPatchClick } from './patch-click.js';
 
 export const BACKGROUND = 0x20242b;
 
@@ -58,6 +59,8 @@ export function createViewer(container, bezierEditing) {
   const placement = createPlacementGizmo({ scene, camera, dom: renderer.domElement, orbit: controls, render });
   const borders = createBorderPicker({ scene, camera, dom: renderer.domElement, render, overlays, busy: placement.busy });
   const marks = createPatchMarks(surfaces);
+  const clicks = createPatchClick({ camera, dom: renderer.domElement, surfaces,
+    busy: () => placement.busy() || borders.state().enabled || Boolean(editor.active()) });
 
   // Coalesced: every change within a frame (a solve drawn, marks, shading, the gizmo) draws
   // once, at the next animation frame. A software GL (SwiftShader) renders each call in
@@ -101,6 +104,8 @@ export function createViewer(container, bezierEditing) {
     borders,
     /** Move, turn and scale a surface (placement-gizmo.js). */
     placement,
+    /** fn(name | null) on a click on a patch or on the background (patch-click.js). */
+    onPatchClick: clicks.onClick,
 
     /**
      * Replace the drawn patches with freshly solved ones: in place when the same patches
