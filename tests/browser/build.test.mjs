@@ -314,6 +314,7 @@ describe('building a model in the page', { skip }, () => {
     const fill = s.patches.find((p) => p.kind === 'bezier');
     assert.equal(fill.name, 'fill1');
     assert.deepEqual(Object.keys(fill.borders).sort(), ['u0', 'u1', 'v0', 'v1']);
+    assert.equal(fill.normals, undefined, 'a fill by its borders needs no guiding normals');
     const joins = await page.evaluate(() => window.__pdesurf.analysis().report.joins);
     assert.equal(joins.filter((j) => j.patch === 'fill1').length, 4, JSON.stringify(joins));
     assert.ok(joins.every((j) => j.ok && j.level === 'G1'), JSON.stringify(joins));
