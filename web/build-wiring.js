@@ -22,7 +22,14 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   let gizmoMode = null; // 'translate' | 'rotate' | 'scale' | null
   let placement = null; // the selected surface's placement folder
   const hidden = new Set();
-  const drawnPlacement = new Map(); // surface name -> the placement its drawn mesh was solved at
+  // The scene text of the drawn solve: a gizmo drag previews from the placement its mesh was
+  // solved at. Read only while a drag needs it (not on every solve).
+  let drawnText = null;
+  let drawnScene = null; // drawnText parsed, once
+  const drawnPlacement = (name) => {
+    if (!drawnScene && drawnText) drawnScene = JSON.parse(drawnText);
+    return surfacesOf(drawnScene).find((p) => p.name === name)?.placement ?? IDENTITY;
+  };
 
   // Building edits: one undo step each; the answer shows beside the choices.
   function build(name, run, more = {}) {
@@ -141,7 +148,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     const place = (now) => doc.apply({ name: 'place', run: (s) => setPlacement(s.scene, name, now), build: true });
     viewer.placement.attach(name, patch.placement ?? IDENTITY, pivotOf(mesh), {
       onDrag: (now) => {
-        previewMesh(viewer.meshOf(name), drawnPlacement.get(name) ?? IDENTITY, now);
+        previewMesh(viewer.meshOf(name), drawnPlacement(name), now);
         place(now);
       },
       onCommit: (now) => place(now),
@@ -198,8 +205,8 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     /** A good solve of `sceneText` was drawn: borders and the gizmo's mesh are the new ones. */
     drawn(patches, sceneText) {
       drawn = patches;
-      drawnPlacement.clear();
-      for (const p of surfacesOf(JSON.parse(sceneText))) if (p.placement) drawnPlacement.set(p.name, p.placement);
+      drawnText = sceneText;
+      drawnScene = null;
       for (const name of hidden) viewer.setPatchVisible(name, false);
       if (doc.selection() && gizmoMode) attachGizmo(doc.selection());
     },

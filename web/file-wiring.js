@@ -8,6 +8,7 @@ import { createFilePicker } from './import/file-picker.js';
 import { installFileDrop } from './import/file-drop.js';
 import { downloadFile } from './export/download.js';
 import { exportBaseName, pngFileName } from './export/file-names.js';
+import { messageOf } from './state/document.js';
 
 // What runs only once a file is opened or exported loads then (the cold start stays as it was).
 const meshExport = () => import('./export/mesh-export.js');
@@ -15,7 +16,6 @@ const pngExport = () => import('./export/png-export.js');
 const sceneExport = () => import('./export/scene-export.js');
 const sceneFile = () => import('./import/scene-file.js');
 
-const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
 const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
 

@@ -7,6 +7,7 @@
 #include "bezier/bernstein.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "common/errors.hpp"
+#include "scene/surface_reference.hpp"
 #include "scene/trimline_checks.hpp"
 
 namespace pdesurf {
@@ -59,13 +60,9 @@ std::string num(double x) { return shortNumber(x); }
 // The surface a border names: a "surface" patch, not trimmed along a curve.
 void locate(Scene& scene, Border& b) {
   const BorderReference& ref = *b.ref;
-  for (size_t i = 0; i < scene.patches.size(); ++i)
-    if (scene.patches[i].name == ref.surface) b.surface = &scene.patches[i], b.surfaceIndex = i;
-  if (!b.surface) fail(ErrorCode::UnknownName, ref.path + ".surface", "no patch named '" + ref.surface + "'");
+  b.surfaceIndex = scene_json::referencedSurface(scene, ref.surface, ref.path, "a border");
+  b.surface = &scene.patches[b.surfaceIndex];
   const Patch& s = *b.surface;
-  if (s.kind != PatchKind::Primary || !s.primary.full[0] || !s.primary.full[1] || !s.primary.full[2])
-    fail(ErrorCode::InvalidField, ref.path + ".surface",
-         "'" + ref.surface + "' is a " + s.kindName + " patch; a border refers to a \"surface\" patch (expressions in t and v)");
   if (s.primary.trimmed)
     fail(ErrorCode::InvalidField, ref.path + ".surface",
          "'" + ref.surface + "' is trimmed along a curve by a blend end; a Bezier border needs an untrimmed surface");

@@ -9,6 +9,8 @@
 #include "scene/expression_fields.hpp"
 #include "scene/trimline_checks.hpp"
 
+#include "scene/surface_reference.hpp"
+
 namespace pdesurf {
 
 namespace {
@@ -50,14 +52,8 @@ struct DerivedEnd {
 DerivedEnd locate(Scene& scene, Patch& blend, int end) {
   DerivedEnd d;
   d.blend = &blend, d.end = end, d.ref = &blend.ends[end];
-  const EndReference& ref = *d.ref;
-  for (size_t i = 0; i < scene.patches.size(); ++i)
-    if (scene.patches[i].name == ref.surface) d.surface = &scene.patches[i], d.surfaceIndex = i;
-  if (!d.surface) fail(ErrorCode::UnknownName, ref.path + ".surface", "no patch named '" + ref.surface + "'");
-  const Patch& s = *d.surface;
-  if (s.kind != PatchKind::Primary || !s.primary.full[0] || !s.primary.full[1] || !s.primary.full[2])
-    fail(ErrorCode::InvalidField, ref.path + ".surface",
-         "'" + ref.surface + "' is a " + s.kindName + " patch; an end refers to a \"surface\" patch (expressions in t and v)");
+  d.surfaceIndex = scene_json::referencedSurface(scene, d.ref->surface, d.ref->path, "an end");
+  d.surface = &scene.patches[d.surfaceIndex];
   return d;
 }
 

@@ -2,7 +2,7 @@
 // test and scripts/bench-page.mjs: select the surface in the outliner, turn the gizmo on
 // (move), find its x arrow on screen and drag it in `steps` pointer moves, one per frame,
 // counting frames (requestAnimationFrame), the longest gap between them, long tasks and the
-// solves drawn meanwhile.
+// solves drawn meanwhile. watchFrames and stopFrames are tests/browser/worker.test.mjs's too.
 
 // Hover outward from the pivot along the screen image of world x until the gizmo shows 'X'.
 async function findArrow(page) {
@@ -56,8 +56,7 @@ async function drag(page, at, steps, pixels) {
     await page.mouse.move(at.x + pixels * k * at.dx, at.y + pixels * k * at.dy);
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
   }
-  const ms = Date.now() - t0;
-  return ms;
+  return Date.now() - t0;
 }
 
 /** The same drag orbiting the camera (renders only, no solve): the frames' baseline. */
@@ -76,13 +75,7 @@ export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
   const at = await findArrow(page);
   const solvesBefore = await page.evaluate(() => window.__pdesurf.solveCount);
   await watchFrames(page);
-  await page.mouse.down();
-  const t0 = Date.now();
-  for (let k = 1; k <= steps; k++) {
-    await page.mouse.move(at.x + pixels * k * at.dx, at.y + pixels * k * at.dy);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
-  }
-  const dragMs = Date.now() - t0;
+  const dragMs = await drag(page, at, steps, pixels);
   const during = await stopFrames(page);
   await page.mouse.up();
   return { dragMs, frames: during.frames, fps: (1000 * during.frames) / dragMs, maxGap: during.maxGap,

@@ -8,6 +8,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { skip, startHarness, hooks, shoot, REPO } from './harness.mjs';
 import { encodeState } from '../../web/link/link-codec.js';
+// Frames painted, the longest gap between them and long tasks (requestAnimationFrame, Long Tasks API).
+import { watchFrames } from './gizmo-drag.mjs';
 
 const scene = JSON.parse(fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig2a.json'), 'utf8'));
 
@@ -16,22 +18,6 @@ async function linkTo(method) {
   s.patches[0].method = method;
   return `/web/#${await encodeState({ scene: s, grid: { nu: 64, nv: 64 } })}`;
 }
-
-// Frames painted and the longest gap between them, from requestAnimationFrame; long tasks
-// from the Long Tasks API.
-const watchFrames = (page) => page.evaluate(() => {
-  const w = { frames: 0, maxGap: 0, last: performance.now(), longTasks: [] };
-  const tick = (t) => {
-    w.frames++;
-    w.maxGap = Math.max(w.maxGap, t - w.last);
-    w.last = t;
-    if (!w.stop) requestAnimationFrame(tick);
-  };
-  requestAnimationFrame(tick);
-  new PerformanceObserver((list) => { for (const e of list.getEntries()) w.longTasks.push(Math.round(e.duration)); })
-    .observe({ type: 'longtask' });
-  window.__frames = w;
-});
 
 describe('solving off the main thread', { skip }, () => {
   let h;

@@ -91,14 +91,7 @@ Verdict certify(const json& j) {
   return v;
 }
 
-std::string errorOf(const json& j) {
-  try {
-    parseScene(j.dump());
-  } catch (const Error& e) {
-    return std::string(errorCodeName(e.code())) + ": " + e.what();
-  }
-  return "";
-}
+std::string errorOf(const json& j) { return parseErrorOf(j.dump()); }
 
 const Patch& fillOf(const Scene& s) { return *s.find("fill"); }
 

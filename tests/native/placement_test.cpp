@@ -74,14 +74,7 @@ double movedDifference(const SeparableSurface& a, const SeparableSurface& b, con
   return diff / size;
 }
 
-std::string errorOf(const json& j) {
-  try {
-    parseScene(j.dump());
-  } catch (const Error& e) {
-    return std::string(errorCodeName(e.code())) + ": " + e.what();
-  }
-  return "";
-}
+std::string errorOf(const json& j) { return parseErrorOf(j.dump()); }
 
 }  // namespace
 

@@ -6,7 +6,9 @@
 
 #include <Eigen/Geometry>
 
+#include "common/errors.hpp"
 #include "pde/pde_problem.hpp"
+#include "scene/scene.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf::testing {
@@ -26,6 +28,16 @@ constexpr double kTimeScale = 1.0;
 #else
 constexpr double kTimeScale = 1.0;
 #endif
+
+// "<ErrorCode>: <message>" of the error parseScene(text) throws, or "" when it reads.
+inline std::string parseErrorOf(const std::string& text) {
+  try {
+    parseScene(text);
+  } catch (const Error& e) {
+    return std::string(errorCodeName(e.code())) + ": " + e.what();
+  }
+  return "";
+}
 
 inline std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
