@@ -20,7 +20,7 @@ struct PatchResidual {
 std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
   std::vector<PatchResidual> out;
   for (const SolvedPatch& s : solved)
-    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.patch->pde, s.surface)});
+    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.pde(), s.surface)});
   return out;
 }
 
@@ -38,7 +38,11 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
   for (const PatchResidual& p : res)
     interior.push_back({{"patch", p.patch}, {"method", p.method}, {"residual", p.r.absolute}, {"residual_rel", p.r.relative},
                         {"worst_u", p.r.u}, {"worst_v", p.r.v}});
-  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"crossings", crossings}, {"interior", interior}};
+  json centres = json::array();
+  for (const FillCentre& c : r.centres)
+    centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
+                       {"curvature_ratio", c.curvatureRatio}, {"ok", c.ok}});
+  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"centres", centres}, {"crossings", crossings}, {"interior", interior}};
 }
 
 }  // namespace
@@ -63,6 +67,11 @@ int runCheck(const Options& o, std::ostream& out) {
                   j.fold ? "YES" : "no", j.degenerate, j.ok ? "ok" : "FAILS");
     out << line;
   }
+  for (const FillCentre& c : r.centres) {
+    std::snprintf(line, sizeof line, "centre %s: normal spread %.2e deg  fold %s  curvature %.3g (ratio %.2f to the outer rings)  %s\n", c.patch.c_str(),
+                  c.normalSpreadDeg, c.fold ? "YES" : "no", c.curvatureNear, c.curvatureRatio, c.ok ? "ok" : "FAILS");
+    out << line;
+  }
   for (const PatchResidual& p : res) {
     std::snprintf(line, sizeof line, "interior %s (%s): PDE residual %.2e, relative %.2e at (u, v) = (%.3g, %.3g)\n", p.patch.c_str(),
                   p.method.c_str(), p.r.absolute, p.r.relative, p.r.u, p.r.v);
@@ -73,7 +82,10 @@ int runCheck(const Options& o, std::ostream& out) {
                   c.u[0], c.u[1], c.v[0], c.v[1], c.triangles);
     out << line;
   }
-  std::snprintf(line, sizeof line, "%zu joins, %zu crossings: %s\n", r.joins.size(), r.crossings.size(), r.ok ? "ok" : "FAILS");
+  if (r.centres.empty())
+    std::snprintf(line, sizeof line, "%zu joins, %zu crossings: %s\n", r.joins.size(), r.crossings.size(), r.ok ? "ok" : "FAILS");
+  else
+    std::snprintf(line, sizeof line, "%zu joins, %zu centres, %zu crossings: %s\n", r.joins.size(), r.centres.size(), r.crossings.size(), r.ok ? "ok" : "FAILS");
   out << line;
   return r.ok ? 0 : 1;
 }

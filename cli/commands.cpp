@@ -20,7 +20,7 @@ int runSample(const Options& o, std::ostream& out) {
   if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE or Bezier patch" : "no patch named '" + o.patch + "'");
   Method method;
   if (!o.method.empty()) method = parseMethod(o.method);
-  const SolvedPatch solved = solvePatch(*patch, o.method.empty() ? nullptr : &method);
+  const SolvedPatch solved = solvePatchIn(scene, *patch, o.method.empty() ? nullptr : &method);
   OutBuffer b(out, "standard output");
   if (o.controlNet) {
     if (patch->kind != PatchKind::Bezier) throw std::runtime_error("--control-net: patch '" + patch->name + "' is not a Bezier patch");

@@ -17,6 +17,7 @@ namespace {
 // An end given by reference (scene version 3) promises the continuity it asks for.
 int promisedLevel(const Patch& p, int end) {
   if (p.kind == PatchKind::Bezier) return p.bezier.energy == BezierEnergy::ThinPlate ? 1 : 0;
+  if (p.fill.given) return static_cast<int>(p.fill.continuity);
   if (p.ends[end].given) return static_cast<int>(p.ends[end].continuity);
   int order = 6;
   for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
@@ -54,26 +55,50 @@ double normalCurvature(const EdgePoint& p, const Eigen::Vector3d& n, const Eigen
   return II / (a * a * I(0, 0) + 2 * a * b * I(0, 1) + b * b * I(1, 1));
 }
 
+// The met patch's edge (Meets::sourceEdge): a primary's t0/t1 or a pde patch's u0/u1 (along v),
+// or a Bézier border (v0/v1 run along u); its name for the report.
+struct SourceEdge {
+  bool alongU = false;
+  int end = 0;
+  std::string name;
+};
+
+SourceEdge sourceEdgeOf(const Patch& p, const Meets& m) {
+  if (m.sourceEdge < 0) return {false, m.atT1 ? 1 : 0, m.atT1 ? "t1" : "t0"};
+  return {m.sourceEdge >= 2, m.sourceEdge % 2, p.kind == PatchKind::Primary ? (m.sourceEdge ? "t1" : "t0") : kBezierEdge[m.sourceEdge]};
+}
+
+// Samples at the middles of `count` equal parts of [a0, a1]: a fill's side is measured on its
+// open interval (its corners are the model's vertices, where the sides' tangent planes differ).
+std::vector<EdgePoint> openEdgeSamples(const SeparableSurface& s, bool alongU, int end, double a0, double a1, int count) {
+  const double h = (a1 - a0) / count / 2;
+  return edgeSamples(s, alongU, end, a0 + h, a1 - h, count);
+}
+
 JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size) {
   const SeparableSurface& ts = target.surface;
+  const SourceEdge source = sourceEdgeOf(primary, m);
   JoinResult r;
   r.patch = m.patch;
   r.end = std::string(m.alongU ? "v" : "u") + (m.end ? "1" : "0");
   r.surface = primary.name;
   // A trimmed surface's edge is its trimline (t = 0 after the trim): name the border it replaces.
-  r.edge = m.curve ? std::string("curve replacing ") + (m.replacesT1 ? "t1" : "t0") : m.atT1 ? "t1" : "t0";
+  r.edge = m.curve ? std::string("curve replacing ") + (m.replacesT1 ? "t1" : "t0") : source.name;
   r.level = promisedLevel(*target.patch, m.alongU ? 0 : m.end);
-  // The target's border parameter runs over its own range; the primary's v over the given
-  // interval, else (PDE) the same v as the target, else (Bézier) the primary's v-range.
-  const double a0 = m.alongU ? ts.u0 : ts.v0, a1 = m.alongU ? ts.u1 : ts.v1;
+  // The target's border parameter runs over its own range (a fill's side: its part of it); the
+  // primary's v over the given interval, else (PDE) the same v as the target, else (Bézier)
+  // the primary's v-range.
+  const bool part = !std::isnan(m.targetFrom);
+  const double a0 = part ? m.targetFrom : m.alongU ? ts.u0 : ts.v0, a1 = part ? m.targetTo : m.alongU ? ts.u1 : ts.v1;
   double p0 = m.v0, p1 = m.v1;
   if (std::isnan(p0)) {
     const bool sameV = target.patch->kind == PatchKind::Pde;
     p0 = sameV ? a0 : prim.surface.v0;
     p1 = sameV ? a1 : prim.surface.v1;
   }
-  const auto B = edgeSamples(ts, m.alongU, m.end, a0, a1, kJoinSamples);
-  auto P = edgeSamples(prim.surface, false, m.atT1 ? 1 : 0, p0, p1, kJoinSamples);
+  const auto sample = part ? openEdgeSamples : edgeSamples;
+  const auto B = sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
+  auto P = sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
   const double floor = 1e-9 * size;
@@ -145,7 +170,6 @@ std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<Solve
   std::vector<JoinResult> out;
   for (size_t i = 0; i < solved.size(); ++i) {
     const Patch& p = *solved[i].patch;
-    if (p.kind != PatchKind::Primary) continue;
     for (const Meets& m : p.meets) {
       const SolvedPatch& target = solvedOf(solved, m.patch);
       try {
@@ -165,9 +189,12 @@ SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solve
   SceneReport r;
   r.sceneSize = sceneSizeOf(solved);
   r.joins = certifyJoins(scene, solved, r.sceneSize);
+  for (const SolvedPatch& sp : solved)
+    if (sp.patch->fill.given) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
   if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);
   r.ok = r.crossings.empty();
   for (const JoinResult& j : r.joins) r.ok = r.ok && j.ok;
+  for (const FillCentre& c : r.centres) r.ok = r.ok && c.ok;
   return r;
 }
 

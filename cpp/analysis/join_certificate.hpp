@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/crossings.hpp"
+#include "analysis/fill_centre.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
@@ -36,7 +37,8 @@ struct SceneReport {
   double sceneSize = 0.0;  // bounding-box diagonal of every patch (32×32 samples)
   std::vector<JoinResult> joins;
   std::vector<Crossing> crossings;
-  bool ok = true;  // every join keeps its promise and nothing crosses
+  std::vector<FillCentre> centres;  // every fill's centre (version 4)
+  bool ok = true;  // every join keeps its promise, every centre is regular and nothing crosses
 };
 
 const char* levelName(int level);  // "G0", "G1", "G2"
@@ -44,7 +46,7 @@ const char* levelName(int level);  // "G0", "G1", "G2"
 // sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf).
 std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize);
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
-// Joins, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
+// Joins, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);
 
 }  // namespace pdesurf

@@ -15,6 +15,7 @@ class GeneralFunction {
  public:
   GeneralFunction(std::string text, Expr e) : text_(std::move(text)) { derivs_.push_back(std::move(e)); }
   const std::string& text() const { return text_; }
+  const Expr& expr() const { return derivs_.front(); }
   // A family function marked "general" in the scene remembers what it is, so the exact
   // (closed) solution stays available to measure the general methods against.
   bool hasOrigin = false;

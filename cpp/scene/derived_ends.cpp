@@ -128,7 +128,10 @@ void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& deriv
     const DerivedEnd& d = *derived[end];
     // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
     // ends touch); "surface": power 1 continues the surface's t at its own speed.
-    const double k = ref.surfaceScale ? 1.0 : (gap > 0 ? gap : 1.0) / d.meanT;
+    // Beside a chained end (version 4) the other end's curve is known only once solved: the
+    // surface's own speed then.
+    const bool chained = !blend.ends[0].patch.empty() || !blend.ends[1].patch.empty();
+    const double k = ref.surfaceScale || chained ? 1.0 : (gap > 0 ? gap : 1.0) / d.meanT;
     const double away = (ref.atT1 ? 1.0 : -1.0) * (ref.flip ? -1.0 : 1.0);  // the blend's side, in t
     const double sign = end == 0 ? away : -away;
     const int level = static_cast<int>(ref.continuity);
@@ -200,7 +203,7 @@ void deriveEnds(Scene& scene, ExprBudget& budget) {
   for (Patch& blend : scene.patches) {
     if (blend.kind != PatchKind::Pde) continue;
     for (int end = 0; end < 2; ++end)
-      if (blend.ends[end].given) all.push_back(locate(scene, blend, end));
+      if (blend.ends[end].given && blend.ends[end].patch.empty()) all.push_back(locate(scene, blend, end));
   }
   if (all.empty()) return;
   checkRules(all);

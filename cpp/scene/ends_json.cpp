@@ -7,6 +7,22 @@
 
 namespace pdesurf::scene_json {
 
+Continuity continuityOf(const json& j, const std::string& path) {
+  const std::string c = stringField(j, path);
+  if (c == "position") return Continuity::Position;
+  if (c == "tangency") return Continuity::Tangency;
+  if (c == "curvature") return Continuity::Curvature;
+  fail(ErrorCode::InvalidField, path, "expected \"position\", \"tangency\" or \"curvature\"");
+}
+
+int edgeIndex(const std::string& at, const std::string& path, bool surfaceNames) {
+  for (int k = 0; k < 4; ++k)
+    if (at == kBezierEdge[k]) return k;
+  if (surfaceNames && (at == "t0" || at == "t1")) return at == "t1" ? 1 : 0;
+  fail(ErrorCode::InvalidField, path,
+       std::string("expected ") + (surfaceNames ? "\"t0\", \"t1\" (a surface), " : "") + "\"u0\", \"u1\" (a pde patch) or \"v0\", \"v1\" (a bezier patch)");
+}
+
 namespace {
 
 Expr expressionInV(const json& j, const std::string& path, const Resolver& r) {
@@ -24,7 +40,32 @@ Expr expressionInV(const json& j, const std::string& path, const Resolver& r) {
   }
 }
 
-EndReference parseEnd(const json& j, const std::string& path, const Resolver& r) {
+// Version 4, a chain: {"patch", "at": "u0" | "u1" | "v0" | "v1", "continuity", "power",
+// "reverse"}; whether the edge exists is checked once every patch is known (scene/patch_graph).
+EndReference parseChainEnd(const json& j, const std::string& path, const Resolver& r, int version) {
+  if (version < 4) fail(ErrorCode::InvalidField, path + ".patch", "an end on another patch needs scene version 4");
+  allowOnly(j, path, {"patch", "at", "continuity", "power", "reverse"});
+  EndReference e;
+  e.given = true;
+  e.path = path;
+  e.patch = stringField(require(j, "patch", path), path + ".patch", 64);
+  e.patchEdge = edgeIndex(stringField(require(j, "at", path), path + ".at"), path + ".at", false);
+  if (j.contains("reverse")) {
+    if (!j["reverse"].is_boolean()) fail(ErrorCode::InvalidField, path + ".reverse", "expected true or false");
+    e.reverse = j["reverse"].get<bool>();
+  }
+  e.power = constant(j.contains("power") ? r.number(j["power"], path + ".power") : 1.0);
+  if (!(e.power->value > 0)) fail(ErrorCode::InvalidField, path + ".power", "must be positive");
+  e.surfaceScale = true;
+  return e;
+}
+
+EndReference parseEnd(const json& j, const std::string& path, const Resolver& r, int version) {
+  if (j.is_object() && j.contains("patch")) {
+    EndReference e = parseChainEnd(j, path, r, version);
+    if (j.contains("continuity")) e.continuity = continuityOf(j["continuity"], path + ".continuity");
+    return e;
+  }
   allowOnly(j, path, {"surface", "at", "continuity", "power", "scale", "flip"});
   EndReference e;
   e.given = true;
@@ -47,13 +88,7 @@ EndReference parseEnd(const json& j, const std::string& path, const Resolver& r)
   } else {
     fail(ErrorCode::InvalidField, path + ".at", "expected \"t0\", \"t1\" or {\"t\": \"<expression in v>\"}");
   }
-  if (j.contains("continuity")) {
-    const std::string c = stringField(j["continuity"], path + ".continuity");
-    if (c == "position") e.continuity = Continuity::Position;
-    else if (c == "tangency") e.continuity = Continuity::Tangency;
-    else if (c == "curvature") e.continuity = Continuity::Curvature;
-    else fail(ErrorCode::InvalidField, path + ".continuity", "expected \"position\", \"tangency\" or \"curvature\"");
-  }
+  if (j.contains("continuity")) e.continuity = continuityOf(j["continuity"], path + ".continuity");
   e.power = j.contains("power") ? expressionInV(j["power"], path + ".power", r) : constant(1.0);
   if (j.contains("scale")) {
     const std::string sc = stringField(j["scale"], path + ".scale");
@@ -69,13 +104,13 @@ EndReference parseEnd(const json& j, const std::string& path, const Resolver& r)
 
 }  // namespace
 
-int parseEnds(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
+int parseEnds(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
   allowOnly(j, path, {"u0", "u1"});
   int order = 0;
   for (int end = 0; end < 2; ++end) {
     const char* key = end == 0 ? "u0" : "u1";
     if (!j.contains(key)) continue;
-    patch.ends[end] = parseEnd(j[key], path + "." + key, r);
+    patch.ends[end] = parseEnd(j[key], path + "." + key, r, version);
     order = std::max(order, 2 * (static_cast<int>(patch.ends[end].continuity) + 1));
   }
   if (order == 0) fail(ErrorCode::InvalidField, path, "expected u0, u1 or both");

@@ -9,6 +9,12 @@ namespace pdesurf::scene_json {
 
 // Reads patch.ends from `j` ({"u0": {...}, "u1": {...}}); returns the operator order the
 // highest continuity asks (position 2, tangency 4, curvature 6).
-int parseEnds(const json& j, const std::string& path, const Resolver& r, Patch& patch);
+// Version 4 also takes an end on another patch: {"patch", "at": "u0"...}, a chain.
+int parseEnds(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
+
+// "position", "tangency", "curvature".
+Continuity continuityOf(const json& j, const std::string& path);
+// "u0", "u1", "v0", "v1" (kBezierEdge's order), with surfaceNames also "t0", "t1" (as u0, u1).
+int edgeIndex(const std::string& at, const std::string& path, bool surfaceNames);
 
 }  // namespace pdesurf::scene_json

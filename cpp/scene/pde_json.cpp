@@ -129,7 +129,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
   int needed = 0;
   if (j.contains("ends")) {
     if (version < 3) fail(ErrorCode::InvalidField, path + ".ends", "ends by reference need scene version 3");
-    needed = parseEnds(j["ends"], path + ".ends", r, patch);
+    needed = parseEnds(j["ends"], path + ".ends", r, version, patch);
   }
   if (j.contains("method")) {
     try {

@@ -2,7 +2,10 @@
 // parseScene validates everything and names the offending field in its errors; solveScene
 // turns each patch into a separable surface.
 #pragma once
+#include <Eigen/Core>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,7 +53,13 @@ enum class Continuity { Position = 0, Tangency = 1, Curvature = 2 };
 // "flip"} (docs/blends-by-reference.md). Its conditions are derived from the surface.
 struct EndReference {
   bool given = false;
-  std::string surface;  // the name of a "surface" patch
+  std::string surface;  // the name of a "surface" patch (empty for an end on a patch, below)
+  // Version 4, a chain: the end continues another pde patch's end (edge 0 u0, 1 u1) or a
+  // Bézier patch's border (kBezierEdge's order) instead of a surface; its conditions come from
+  // that patch once it is solved (scene/chain_conditions.hpp). power must then be constant.
+  std::string patch;
+  int patchEdge = 0;
+  bool reverse = false;  // a Bézier border's parameter runs backwards along this end's v
   bool curve = false;   // the trimline is t = tau(v); else the iso-line t = t0 or t1
   bool atT1 = false;    // iso-line: t1 (else t0); curve: it replaces the border t1 (else t0)
   Expr tau;             // curve only: an expression in v
@@ -84,6 +93,37 @@ struct Meets {
   // Version 4, a Bézier border with "reverse": the border parameter 0..1 runs over the
   // primary's v-range backwards (v1 to v0).
   bool reversed = false;
+  // Version 4, the met patch is a pde patch (its end u0/u1 by atT1) or a Bézier patch (its
+  // border sourceEdge in kBezierEdge's order); -1: atT1 names the edge t0/t1 (u0/u1).
+  int sourceEdge = -1;
+  // Version 4, a fill (PatchKind::Pde with a loop): the part [from, to] of the fill's border
+  // u = 0 (its v) that meets this edge; NaN: the target's whole border.
+  double targetFrom = NAN, targetTo = NAN;
+};
+
+// Version 4: one border of a fill's loop, or the edge a chained end continues: an edge of
+// another patch (a surface's t0/t1, a pde patch's u0/u1, a Bézier border), optionally a part
+// [from, to] of its parameter, optionally run backwards.
+struct LoopBorder {
+  std::string patch;
+  int edge = 0;          // surface, pde: 0 t0/u0, 1 t1/u1; Bézier: kBezierEdge's order
+  double from = NAN, to = NAN;  // NaN: the edge's whole parameter range
+  bool reverse = false;
+  Expr power;            // a number (parameters folded in); 1 when not given
+  std::string path;      // "patches[3].borders[1]", for errors
+};
+
+// Version 4, kind "fill" (docs/fills.md): a pde patch that closes a loop of N borders of other
+// patches. u = 0 is the loop (v in [0, 2π], border k on [2πk/N, 2π(k+1)/N]); u = 1 collapses to
+// a centre point with a tangent plane. Order 2 (position) or 4 (tangency along every side).
+struct FillLoop {
+  bool given = false;
+  std::vector<LoopBorder> borders;
+  Continuity continuity = Continuity::Tangency;
+  bool centreGiven = false, normalGiven = false;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+  double height = 1.0;  // the derived centre's lift along the normal, in units of the loop's rise
+  std::string path;     // "patches[3]"
 };
 
 // Version 4: a Bézier patch's border given by reference, {"surface", "at", "reverse"}
@@ -131,6 +171,11 @@ struct Patch {
   // whose four borders are given may omit its control_net (bezier.initial is then empty until
   // deriveBorders builds it).
   std::array<BorderReference, 4> borders;
+  // Pde only, version 4: a fill's loop (kind "fill"); its conditions are derived at solve time.
+  FillLoop fill;
+  // The patches whose solved surfaces this one's conditions come from (chained ends, a fill's
+  // borders): solveScene solves them first.
+  std::vector<std::string> dependsOn;
 };
 
 struct Scene {
@@ -138,6 +183,8 @@ struct Scene {
   std::string title;
   std::vector<Parameter> parameters;
   std::vector<Patch> patches;
+  // Indices into patches, every patch after the ones it depends on (parseScene refuses a cycle).
+  std::vector<size_t> solveOrder;
   const Patch* find(const std::string& name) const;
   const Patch* firstPde() const;
   const Patch* firstSolved() const;  // the first pde patch, else the first bezier patch
@@ -150,6 +197,11 @@ struct SolvedPatch {
   // Bezier only: the solved control net, its energy and normal misfit.
   std::vector<Eigen::Vector3d> controlNet;
   double energy = 0.0, normalMisfit = 0.0;
+  // Pde only: the problem solved, with the conditions derived from other patches filled in
+  // (null: the patch's own pde).
+  std::shared_ptr<const PdeProblem> problem;
+  bool reused = false;  // the same problem as the cache's last solve of this patch: not re-solved
+  const PdeProblem& pde() const { return problem ? *problem : patch->pde; }
 };
 
 // Throws Error(ParseError | InvalidField | UnknownName | NonFinite | TooLarge) with a field
@@ -159,14 +211,28 @@ Scene parseScene(const std::string& jsonText);
 
 // What repeated solves can reuse: the closed form's ODE bases and the Bézier factorisations.
 // The page keeps one between calls; one-off solves pass none.
+// Its last solve of every pde patch, by name: a patch whose derived problem is unchanged (same
+// operator, conditions, forces, method) is not solved again, so an edit re-solves only the
+// patches downstream of it.
+struct SolveMemo {
+  PdeProblem problem;
+  Method method;
+  SeparableSurface surface;
+  Method used;
+};
 struct SolveCache {
   BasisCache bases;
   BezierSolverCache bezier;
+  std::map<std::string, SolveMemo> solved;
 };
 
-// Throws, message prefixed with the patch name. `method` overrides the patch's own.
+// Throws, message prefixed with the patch name. `method` overrides the patch's own. A patch
+// that depends on others (Patch::dependsOn) needs them: solveScene, or solvePatchIn.
 SolvedPatch solvePatch(const Patch& patch, const Method* method = nullptr, SolveCache* cache = nullptr);
+// Every patch, in solveOrder, returned in the scene's order.
 std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache = nullptr);
+// One patch of the scene with what it depends on solved first; `method` overrides its own.
+SolvedPatch solvePatchIn(const Scene& scene, const Patch& patch, const Method* method = nullptr);
 
 // Before drawing every patch of `scene` on an nu×nv grid: throws Error(GridSize) outside
 // 1..limits::kGrid per direction and Error(TooLarge) when all patches together would exceed

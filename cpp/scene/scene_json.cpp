@@ -10,6 +10,7 @@
 #include "scene/bezier_borders.hpp"
 #include "scene/derived_ends.hpp"
 #include "scene/expression_fields.hpp"
+#include "scene/patch_graph.hpp"
 #include "scene/placement.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
@@ -26,6 +27,8 @@ using namespace scene_json;
 void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, size_t& assemblyWork);
 // In scene/pde_json.cpp.
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
+// In scene/fill_json.cpp (version 4).
+void parseFillPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
 namespace {
 
@@ -247,12 +250,15 @@ static Scene parseSceneUnchecked(const std::string& text) {
         const std::string what = e.what();
         throw Error(e.code(), what.rfind(path, 0) == 0 ? what : path + ": " + what);
       }
+    } else if (kind == "fill" && scene.version >= 4) {
+      patch.kind = PatchKind::Pde;
+      parseFillPatch(pj, path, r, scene.version, patch);
     } else if (kind == "surface" && scene.version >= 2) {
       patch.kind = PatchKind::Primary;
       parseSurface(pj, path, r, scene.version, patch);
     } else {
       fail(ErrorCode::InvalidField, path + ".kind",
-           "unknown kind '" + kind + "' (" + (scene.version >= 2 ? "pde, surface, bezier, ruled, separable" : "pde, ruled, separable") + ")");
+           "unknown kind '" + kind + "' (" + (scene.version >= 4 ? "pde, fill, surface, bezier, ruled, separable" : scene.version >= 2 ? "pde, surface, bezier, ruled, separable" : "pde, ruled, separable") + ")");
     }
     scene.patches.push_back(std::move(patch));
   }
@@ -262,6 +268,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     deriveEnds(scene, budget);     // version 3: ends by reference, once every surface is known
     deriveBorders(scene, budget);  // version 4: Bezier borders by reference (after the trims: it refuses a trimmed surface)
   }
+  linkPatches(scene);  // version 4: chained ends and fills (their conditions are derived when solved)
   for (size_t i = 0; i < scene.patches.size(); ++i)
     for (const Meets& m : scene.patches[i].meets) {
       if (!m.by.empty()) continue;  // derived from an end: its patch is that end's blend

@@ -4,6 +4,9 @@
 #include "common/errors.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
+#include "analysis/fill_centre.hpp"
+#include "basis/general_function.hpp"
+#include "scene/chain_conditions.hpp"
 #include "scene/scene.hpp"
 #include "surface/tabulation.hpp"
 
@@ -82,8 +85,75 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 }  // namespace
 
+namespace {
+
+bool sameFunction(const VFunction& a, const VFunction& b) {
+  if (a.isGeneral() != b.isGeneral()) return false;
+  // Expressions are interned: the same expression is the same node while either is alive.
+  if (a.isGeneral()) return a.general->expr() == b.general->expr();
+  return a == b;
+}
+
+bool sameExpansion(const VExpansion& a, const VExpansion& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].coef != b[i].coef || !sameFunction(a[i].g, b[i].g)) return false;
+  return true;
+}
+
+bool sameSlots(const std::vector<VExpansion>& a, const std::vector<VExpansion>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!sameExpansion(a[i], b[i])) return false;
+  return true;
+}
+
+bool sameProblem(const PdeProblem& a, const PdeProblem& b) {
+  if (a.v0 != b.v0 || a.v1 != b.v1) return false;
+  for (int c = 0; c < 3; ++c) {
+    const ComponentProblem &x = a.component[c], &y = b.component[c];
+    if (x.alpha != y.alpha || !sameSlots(x.left, y.left) || !sameSlots(x.right, y.right)) return false;
+    if (x.force.size() != y.force.size() || x.generalForce.size() != y.generalForce.size()) return false;
+    for (size_t i = 0; i < x.force.size(); ++i)
+      if (x.force[i].uPoly != y.force[i].uPoly || !sameFunction(x.force[i].g, y.force[i].g)) return false;
+    for (size_t i = 0; i < x.generalForce.size(); ++i)
+      if (x.generalForce[i].f != y.generalForce[i].f) return false;
+  }
+  return true;
+}
+
+bool sameMethod(const Method& a, const Method& b) {
+  return a.kind == b.kind && a.terms == b.terms && a.navierM == b.navierM && a.navierN == b.navierN && a.navierPoints == b.navierPoints;
+}
+
+SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> problem, const Method* method, SolveCache* cache) {
+  if (patch.kind != PatchKind::Pde) return solvePatch(patch, method, cache);
+  const PdeProblem& pde = problem ? *problem : patch.pde;
+  const Method& m = method ? *method : patch.method;
+  if (cache) {
+    const auto it = cache->solved.find(patch.name);
+    if (it != cache->solved.end() && sameMethod(it->second.method, m) && sameProblem(it->second.problem, pde)) {
+      SolvedPatch out{&patch, it->second.surface, it->second.used, {}, 0.0, 0.0, problem, true};
+      return out;
+    }
+  }
+  try {
+    MethodSolution solution = solveWithMethod(pde, m, cache ? &cache->bases : nullptr);
+    if (patch.fill.given) checkFillRegular(patch, solution.surface);
+    SolvedPatch out{&patch, std::move(solution.surface), solution.used, {}, 0.0, 0.0, problem, false};
+    if (cache) cache->solved[patch.name] = SolveMemo{pde, m, out.surface, out.used};
+    return out;
+  } catch (const Error& e) {
+    throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
+  }
+}
+
+}  // namespace
+
 SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cache) {
   try {
+    if (!patch.dependsOn.empty())
+      throw Error(ErrorCode::InvalidField, "its conditions come from '" + patch.dependsOn.front() + "': solve it with the scene");
     if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}, {}, 0.0, 0.0};
     if (patch.kind == PatchKind::Bezier) {
       std::unique_ptr<BezierSolver> own;
@@ -102,10 +172,58 @@ SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cac
   }
 }
 
+namespace {
+
+// Solves `wanted` (indices, each after what it depends on) into `out` (by index).
+void solveInOrder(const Scene& scene, const std::vector<size_t>& wanted, std::vector<std::unique_ptr<SolvedPatch>>& out, SolveCache* cache,
+                  const Patch* overridden, const Method* method) {
+  const SolvedLookup lookup = [&](const std::string& name) -> const SolvedPatch& {
+    for (size_t i = 0; i < scene.patches.size(); ++i)
+      if (scene.patches[i].name == name && out[i]) return *out[i];
+    throw Error(ErrorCode::Internal, "'" + name + "' is not solved yet");
+  };
+  for (size_t i : wanted) {
+    const Patch& p = scene.patches[i];
+    std::shared_ptr<const PdeProblem> problem;
+    if (!p.dependsOn.empty()) {
+      try {
+        problem = derivedProblem(p, lookup);
+      } catch (const Error& e) {
+        throw Error(e.code(), "patch '" + p.name + "': " + e.what());
+      }
+    }
+    out[i] = std::make_unique<SolvedPatch>(solveWith(p, problem, &p == overridden ? method : nullptr, cache));
+  }
+}
+
+}  // namespace
+
 std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache) {
+  std::vector<std::unique_ptr<SolvedPatch>> byIndex(scene.patches.size());
+  solveInOrder(scene, scene.solveOrder, byIndex, cache, nullptr, nullptr);
   std::vector<SolvedPatch> out;
-  for (const Patch& p : scene.patches) out.push_back(solvePatch(p, nullptr, cache));
+  for (auto& s : byIndex) out.push_back(std::move(*s));
   return out;
+}
+
+SolvedPatch solvePatchIn(const Scene& scene, const Patch& patch, const Method* method) {
+  if (patch.dependsOn.empty()) return solvePatch(patch, method);
+  // What it needs: the patches before it in solveOrder it reaches through dependsOn.
+  std::vector<bool> needed(scene.patches.size(), false);
+  size_t target = 0;
+  while (&scene.patches[target] != &patch) ++target;
+  needed[target] = true;
+  std::vector<size_t> order;
+  for (auto it = scene.solveOrder.rbegin(); it != scene.solveOrder.rend(); ++it) {
+    if (!needed[*it]) continue;
+    order.insert(order.begin(), *it);
+    for (const std::string& d : scene.patches[*it].dependsOn)
+      for (size_t i = 0; i < scene.patches.size(); ++i)
+        if (scene.patches[i].name == d) needed[i] = true;
+  }
+  std::vector<std::unique_ptr<SolvedPatch>> byIndex(scene.patches.size());
+  solveInOrder(scene, order, byIndex, nullptr, &patch, method);
+  return std::move(*byIndex[target]);
 }
 
 }  // namespace pdesurf

@@ -1,0 +1,108 @@
+#include "analysis/fill_centre.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "surface/combine_rows.hpp"
+#include "surface/tabulation.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+constexpr int kRings = 48, kAround = 96, kInner = 12;  // the inner grid: 12 rings over u in [1 - 2^-6, 1 - 2^-12]
+constexpr double kInnerFrom = 1.0 / 64, kInnerTo = 1.0 / 4096;
+
+// Unit normals (zero where X_u × X_v vanishes) and, with second derivatives, the largest
+// |principal curvature|, on the grid of `s` (its u-range as given), row by row.
+struct GridFigures {
+  int nu = 0, nv = 0;
+  std::vector<Eigen::Vector3d> n;  // [j * (nu + 1) + i]
+  std::vector<double> k;
+};
+
+GridFigures figures(const SeparableSurface& s, int nu, int nv, bool curvature) {
+  GridFigures f;
+  f.nu = nu, f.nv = nv;
+  f.n.resize(static_cast<size_t>(nu + 1) * (nv + 1));
+  if (curvature) f.k.resize(f.n.size());
+  const Tabulation t = tabulate(s, nu, nv, curvature ? 2 : 1);
+  combineRows(t, [&](int j, const GridRow& row) {
+    for (int i = 0; i <= nu; ++i) {
+      const auto vec = [&](int q) { return Eigen::Vector3d(row.at(q, 0)[i], row.at(q, 1)[i], row.at(q, 2)[i]); };
+      const Eigen::Vector3d xu = vec(1), xv = vec(2), cross = xu.cross(xv);
+      const size_t at = static_cast<size_t>(j) * (nu + 1) + i;
+      f.n[at] = cross.norm() > 0 ? Eigen::Vector3d(cross.normalized()) : Eigen::Vector3d::Zero();
+      if (!curvature) continue;
+      const Eigen::Vector3d& n = f.n[at];
+      const double E = xu.dot(xu), F = xu.dot(xv), G = xv.dot(xv), L = vec(3).dot(n), M = vec(4).dot(n), N = vec(5).dot(n);
+      const double det = E * G - F * F;
+      const double K = (L * N - M * M) / det, H = (E * N - 2 * F * M + G * L) / (2 * det);
+      f.k[at] = std::abs(H) + std::sqrt(std::max(H * H - K, 0.0));
+    }
+  });
+  return f;
+}
+
+}  // namespace
+
+FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s) {
+  FillCentre r;
+  r.patch = name;
+  const double dv = (s.v1 - s.v0) / kAround;
+  // The fill's grid up to u = 1 - 1/kRings, then the inner grid closing in on the centre.
+  SeparableSurface outer = s, inner = s;
+  outer.u1 = s.u0 + (s.u1 - s.u0) * (kRings - 1) / kRings;
+  inner.u0 = s.u1 - (s.u1 - s.u0) * kInnerFrom, inner.u1 = s.u1 - (s.u1 - s.u0) * kInnerTo;
+  const GridFigures a = figures(outer, kRings - 1, kAround, false), b = figures(inner, kInner, kAround, true);
+  const auto foldAt = [&](const GridFigures& g, const SeparableSurface& range) {
+    for (int j = 0; j <= g.nv && !r.fold; ++j)
+      for (int i = 0; i <= g.nu && !r.fold; ++i) {
+        const Eigen::Vector3d& n = g.n[static_cast<size_t>(j) * (g.nu + 1) + i];
+        const bool nextU = i < g.nu && n.dot(g.n[static_cast<size_t>(j) * (g.nu + 1) + i + 1]) < 0;
+        const bool nextV = j < g.nv && n.dot(g.n[static_cast<size_t>(j + 1) * (g.nu + 1) + i]) < 0;
+        const double u = range.u0 + (range.u1 - range.u0) * i / g.nu;
+        // The loop's corners (u = 0) may turn sharply; a fold is inside the fill.
+        if (u > s.u0 && (nextU || nextV || n.squaredNorm() == 0)) r.fold = true, r.foldU = u, r.foldV = s.v0 + dv * j;
+      }
+  };
+  foldAt(a, outer);
+  foldAt(b, inner);
+  // The two grids meet: the outer grid's last ring against the inner grid's first.
+  for (int j = 0; j <= kAround && !r.fold; ++j)
+    if (a.n[static_cast<size_t>(j) * kRings + kRings - 1].dot(b.n[static_cast<size_t>(j) * (kInner + 1)]) < 0)
+      r.fold = true, r.foldU = outer.u1, r.foldV = s.v0 + dv * j;
+  // The innermost ring: the spread of its normals about their mean.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j = 0; j < kAround; ++j) mean += b.n[static_cast<size_t>(j) * (kInner + 1) + kInner];
+  mean.normalize();
+  for (int j = 0; j < kAround; ++j) {
+    const Eigen::Vector3d& n = b.n[static_cast<size_t>(j) * (kInner + 1) + kInner];
+    r.normalSpreadDeg = std::max(r.normalSpreadDeg, std::atan2(n.cross(mean).norm(), n.dot(mean)) * 180.0 / M_PI);
+  }
+  // Curvature: the three innermost rings against the three outermost of the inner grid.
+  double far = 0.0;
+  for (int j = 0; j < kAround; ++j)
+    for (int i = 0; i < 3; ++i) {
+      far = std::max(far, b.k[static_cast<size_t>(j) * (kInner + 1) + i]);
+      r.curvatureNear = std::max(r.curvatureNear, b.k[static_cast<size_t>(j) * (kInner + 1) + kInner - i]);
+    }
+  r.curvatureRatio = far > 0 ? r.curvatureNear / far : (r.curvatureNear > 0 ? INFINITY : 1.0);
+  if (!std::isfinite(r.normalSpreadDeg)) r.normalSpreadDeg = 180.0;
+  r.ok = !r.fold && r.normalSpreadDeg <= kCentreSpreadDeg && std::isfinite(r.curvatureNear) && r.curvatureRatio <= kCentreCurvatureRatio;
+  return r;
+}
+
+void checkFillRegular(const Patch& fill, const SeparableSurface& surface) {
+  const FillCentre c = measureFillCentre(fill.name, surface);
+  if (!c.fold) return;
+  std::ostringstream o;
+  o.precision(3);
+  o << "the fill folds at u = " << c.foldU << ", v = " << c.foldV << " (its normal turns over): move its centre, lower its height or its borders' power";
+  throw Error(ErrorCode::InvalidField, fill.fill.path + ": " + o.str());
+}
+
+}  // namespace pdesurf

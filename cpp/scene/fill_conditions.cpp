@@ -1,0 +1,206 @@
+// A fill's conditions (docs/fills.md). The loop is the fill's border u = 0: v in [0, 2π], border
+// k of N on [2πk/N, 2π(k+1)/N], mapped linearly onto the part of the edge it names. Along it
+//   X(0, v)   = the borders' positions, piecewise,
+//   X_u(0, v) = k_k d_k: each border's derivative across its edge out of its patch, continued
+//               into the fill (so the fill is G1 to every side), scaled so that its mean length
+//               is the loop's mean radius R (times the border's power);
+// and at u = 1 a centre point C with a tangent plane normal to n:
+//   X(1, v) = C,  X_u(1, v) = -(a cos v + b sin v),
+// a and b the first Fourier harmonic of the loop projected on that plane about C, so the fill
+// leaves its centre as a linear image of polar coordinates: a regular point (not a cone).
+// n is the loop's area vector (Newell) unless given; C the loop's centroid lifted along n by
+// height × the mean rise of X_u(0, v) along n, unless given.
+#include <Eigen/Geometry>
+#include <cmath>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "scene/chain_conditions.hpp"
+#include "scene/expression_fields.hpp"
+#include "scene/patch_graph.hpp"
+#include "scene/solved_edges.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+constexpr int kPerSide = 96;          // samples per border for the loop's figures
+constexpr double kCloseTolerance = 1e-8;  // of the loop's size: a gap beyond this is refused
+
+[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
+
+std::string number(double x) {
+  std::ostringstream o;
+  o.precision(4);
+  o << x;
+  return o.str();
+}
+
+Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
+  const double vars[2] = {v, 0.0};
+  return {evaluate(*e[0], vars), evaluate(*e[1], vars), evaluate(*e[2], vars)};
+}
+
+struct Side {
+  Vec3Expr X, D;   // in the fill's v
+  double v0 = 0, v1 = 0;
+  std::string name;  // "'rear' u0", for messages
+  std::vector<Eigen::Vector3d> x, d;  // samples at kPerSide + 1 evenly spaced v (ends included)
+};
+
+Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangency) {
+  const LoopBorder& b = fill.fill.borders[k];
+  const size_t n = fill.fill.borders.size();
+  const SolvedPatch& source = solved(b.patch);
+  EdgeExprs e = solvedEdge(source, b.edge, tangency ? 1 : 0);
+  Side s;
+  s.v0 = 2 * M_PI * k / n, s.v1 = 2 * M_PI * (k + 1) / n;
+  s.name = "'" + b.patch + "' " + edgeName(*source.patch, b.edge);
+  // s(v) = from + (to - from) (v - v0) / (v1 - v0), or from `to` back to `from`.
+  const double a = b.reverse ? b.to : b.from, slope = ((b.reverse ? b.from : b.to) - a) / (s.v1 - s.v0);
+  const Expr param = add(constant(a - slope * s.v0), multiply(constant(slope), variable(ExprVar::V)));
+  for (int c = 0; c < 3; ++c) {
+    s.X[c] = substitute(e.X[c], ExprVar::V, param);
+    s.D[c] = tangency ? substitute(e.out[c], ExprVar::V, param) : constant(0.0);
+  }
+  for (int i = 0; i <= kPerSide; ++i) {
+    const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
+    s.x.push_back(eval3(s.X, v));
+    s.d.push_back(eval3(s.D, v));
+    if (!s.x.back().allFinite() || !s.d.back().allFinite())
+      fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at its parameter " + number(a + slope * (v - s.v0)));
+  }
+  return s;
+}
+
+// 1 on [v0, v1] (both ends inside the loop's first and last sides), ½ at an inner corner.
+Expr indicator(double v0, double v1, bool first, bool last) {
+  const Expr v = variable(ExprVar::V);
+  const Expr up = first ? constant(1.0) : call(ExprFn::Sign, subtract(v, constant(v0)));
+  const Expr down = last ? constant(-1.0) : call(ExprFn::Sign, subtract(v, constant(v1)));
+  return multiply(constant(0.5), subtract(up, down));
+}
+
+}  // namespace
+
+void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) {
+  const FillLoop& loop = fill.fill;
+  const bool tangency = loop.continuity == Continuity::Tangency;
+  const size_t n = loop.borders.size();
+  std::vector<Side> sides;
+  for (size_t k = 0; k < n; ++k) sides.push_back(sideOf(fill, k, solved, tangency));
+
+  // The loop's size, centroid and mean radius, over evenly spaced v.
+  Eigen::Vector3d lo = sides[0].x[0], hi = lo, centroid = Eigen::Vector3d::Zero(), area = Eigen::Vector3d::Zero();
+  for (const Side& s : sides)
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      lo = lo.cwiseMin(s.x[i]), hi = hi.cwiseMax(s.x[i]);
+      if (i < s.x.size() - 1) centroid += s.x[i], area += s.x[i].cross(s.x[i + 1]) / 2;
+    }
+  const double size = (hi - lo).norm();
+  centroid /= static_cast<double>(n * kPerSide);
+  // Every side must end where the next starts (the last where the first starts).
+  for (size_t k = 0; k < n; ++k) {
+    const Side& s = sides[k];
+    const Side& next = sides[(k + 1) % n];
+    const double gap = (s.x.back() - next.x.front()).norm();
+    if (!(gap <= kCloseTolerance * size))
+      fail(ErrorCode::InvalidField, loop.borders[(k + 1) % n].path,
+           "the loop does not close: " + s.name + " ends " + number(gap) + " (scene units) from where " + next.name + " starts" +
+               (n == 1 ? " (a single border must be a closed curve)" : ""));
+  }
+  if (!(size > 0)) fail(ErrorCode::InvalidField, loop.path + ".borders", "the loop is a single point");
+  double radius = 0.0;
+  for (const Side& s : sides)
+    for (int i = 0; i < kPerSide; ++i) radius += (s.x[i] - centroid).norm();
+  radius /= static_cast<double>(n * kPerSide);
+
+  Eigen::Vector3d normal = loop.normal;
+  if (!loop.normalGiven) {
+    if (!(area.norm() > 1e-9 * radius * radius))
+      fail(ErrorCode::InvalidField, loop.path + ".borders", "the loop encloses no area (its curves lie on a line): give the fill a \"normal\"");
+    normal = area.normalized();
+  }
+  // Each side's cross derivative scaled to the loop's mean radius; the lift of the centre.
+  std::vector<double> scale(n, 0.0);
+  double rise = 0.0;
+  for (size_t k = 0; k < n && tangency; ++k) {
+    double mean = 0.0;
+    for (int i = 0; i < kPerSide; ++i) mean += sides[k].d[i].norm();
+    mean /= kPerSide;
+    if (!(mean > 1e-12 * radius))
+      fail(ErrorCode::InvalidField, loop.borders[k].path, sides[k].name + " has no derivative across it (the surface stops there): it cannot set a tangent plane");
+    scale[k] = loop.borders[k].power->value * radius / mean;
+    for (int i = 0; i < kPerSide; ++i) rise += scale[k] * sides[k].d[i].dot(normal);
+  }
+  rise /= static_cast<double>(n * kPerSide);
+  const Eigen::Vector3d centre = loop.centreGiven ? loop.centre : Eigen::Vector3d(centroid + loop.height * rise * normal);
+
+  // The centre's spokes: the first harmonic of the loop projected on the tangent plane.
+  Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
+  for (const Side& s : sides)
+    for (int i = 0; i < kPerSide; ++i) {
+      const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
+      Eigen::Vector3d p = s.x[i] - centre;
+      p -= p.dot(normal) * normal;
+      a += p * std::cos(v), b += p * std::sin(v);
+    }
+  a *= 2.0 / (n * kPerSide), b *= 2.0 / (n * kPerSide);
+  if (!(a.cross(b).norm() > 1e-3 * radius * radius))
+    fail(ErrorCode::InvalidField, loop.path + ".borders",
+         "the loop does not turn around the centre's normal (seen along it, it is flat or folded): the centre cannot be regular");
+
+  // At each corner the two sides' cross derivatives differ (by up to the corner's angle): left
+  // so, the fill's iso-u curves would turn back on themselves there and fold. Adding a part of
+  // the side's own tangent T keeps the tangent plane (G1 is untouched) and lets both sides
+  // leave the corner along one vector W, the mean of their cross derivatives: along side k,
+  // X_u = γ(v) k_k D_k + α(v) T_k, with (γ, α) linear between the values that give W at its
+  // two corners (1, 0 where W is out of the side's tangent plane or turns back).
+  std::vector<std::array<double, 4>> mix(n, {1.0, 0.0, 1.0, 0.0});  // γ, α at v0; γ, α at v1
+  std::vector<Vec3Expr> tangent(n);
+  for (size_t k = 0; k < n && tangency; ++k)
+    for (int c = 0; c < 3; ++c) tangent[k][c] = derivative(sides[k].X[c], ExprVar::V);
+  const auto fit = [](const Eigen::Vector3d& D, const Eigen::Vector3d& T, const Eigen::Vector3d& W, double* gamma, double* alpha) {
+    Eigen::Matrix2d A;
+    A << D.dot(D), D.dot(T), D.dot(T), T.dot(T);
+    const Eigen::Vector2d x = A.fullPivLu().solve(Eigen::Vector2d(D.dot(W), T.dot(W)));
+    if (!(x.allFinite() && x(0) > 0.2 && x(0) < 5 && (x(0) * D + x(1) * T - W).norm() <= 1e-6 * W.norm())) return;
+    *gamma = x(0), *alpha = x(1);
+  };
+  for (size_t k = 0; k < n && tangency; ++k) {
+    const Side &s = sides[k], &next = sides[(k + 1) % n];
+    const Eigen::Vector3d De = scale[k] * s.d.back(), Ds = scale[(k + 1) % n] * next.d.front();
+    const Eigen::Vector3d W = (De + Ds) / 2;
+    if (!(W.norm() > 0.05 * std::max(De.norm(), Ds.norm()))) continue;  // the sides leave in opposite directions
+    fit(De, eval3(tangent[k], s.v1), W, &mix[k][2], &mix[k][3]);
+    fit(Ds, eval3(tangent[(k + 1) % n], next.v0), W, &mix[(k + 1) % n][0], &mix[(k + 1) % n][1]);
+  }
+  const auto linear = [](double a, double b, double v0, double v1) {
+    return add(constant(a - (b - a) * v0 / (v1 - v0)), multiply(constant((b - a) / (v1 - v0)), variable(ExprVar::V)));
+  };
+
+  for (int c = 0; c < 3; ++c) {
+    Expr x, d;
+    for (size_t k = 0; k < n; ++k) {
+      const Side& s = sides[k];
+      const Expr chi = n == 1 ? constant(1.0) : indicator(s.v0, s.v1, k == 0, k == n - 1);
+      x = x ? add(x, multiply(chi, s.X[c])) : multiply(chi, s.X[c]);
+      if (!tangency) continue;
+      const auto& m = mix[k];
+      Expr dk = multiply(linear(m[0], m[2], s.v0, s.v1), multiply(constant(scale[k]), s.D[c]));
+      if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.v0, s.v1), tangent[k][c]));
+      dk = multiply(chi, dk);
+      d = d ? add(d, dk) : dk;
+    }
+    ComponentProblem& cp = out.component[c];
+    const std::string text = loop.path + " (the loop)";
+    cp.left[0] = scene_json::slotFromExpr(x, text);
+    cp.right[0] = {{VFunction{Family::Poly, 1.0, 0}, centre[c]}};
+    if (tangency) {
+      cp.left[1] = scene_json::slotFromExpr(d, text);
+      cp.right[1] = {{VFunction{Family::Cos, 1.0}, -a[c]}, {VFunction{Family::Sin, 1.0}, -b[c]}};
+    }
+  }
+}
+
+}  // namespace pdesurf

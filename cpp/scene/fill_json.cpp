@@ -1,0 +1,94 @@
+// Version 4's "fill" patch (docs/fills.md): a pde patch closing a loop of borders of other
+// patches. Read here; its conditions come from the solved borders (scene/fill_conditions.cpp).
+#include <cmath>
+
+#include "scene/ends_json.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+using namespace scene_json;
+
+void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
+
+namespace {
+
+constexpr int kMinSides = 1, kMaxSides = 6;
+
+LoopBorder parseBorder(const json& j, const std::string& path, const Resolver& r) {
+  allowOnly(j, path, {"patch", "at", "range", "reverse", "power"});
+  LoopBorder b;
+  b.path = path;
+  b.patch = stringField(require(j, "patch", path), path + ".patch", 64);
+  b.edge = edgeIndex(stringField(require(j, "at", path), path + ".at"), path + ".at", true);
+  if (j.contains("range")) {
+    const auto range = r.range(j, "range", path, 0.0, 1.0);
+    b.from = range[0], b.to = range[1];
+  }
+  if (j.contains("reverse")) {
+    if (!j["reverse"].is_boolean()) fail(ErrorCode::InvalidField, path + ".reverse", "expected true or false");
+    b.reverse = j["reverse"].get<bool>();
+  }
+  const double power = j.contains("power") ? r.number(j["power"], path + ".power") : 1.0;
+  if (!(power > 0)) fail(ErrorCode::InvalidField, path + ".power", "must be positive");
+  b.power = constant(power);
+  return b;
+}
+
+Eigen::Vector3d vectorField(const json& j, const std::string& path, const Resolver& r) {
+  if (!j.is_array() || j.size() != 3) fail(ErrorCode::InvalidField, path, "expected [x, y, z]");
+  const auto v = r.perComponent(j, path);
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+void parseFillPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
+  if (version < 4) fail(ErrorCode::InvalidField, path + ".kind", "a fill needs scene version 4");
+  allowOnly(j, path, {"name", "kind", "borders", "continuity", "centre", "normal", "height", "operator", "force", "method"});
+  FillLoop& fill = patch.fill;
+  fill.given = true;
+  fill.path = path;
+  const json& borders = require(j, "borders", path);
+  if (!borders.is_array()) fail(ErrorCode::InvalidField, path + ".borders", "expected an array of borders");
+  if (borders.size() < kMinSides || borders.size() > kMaxSides)
+    fail(ErrorCode::InvalidField, path + ".borders",
+         "a fill closes 1 (a closed border) to " + std::to_string(kMaxSides) + " borders; this one has " + std::to_string(borders.size()));
+  for (size_t k = 0; k < borders.size(); ++k) fill.borders.push_back(parseBorder(borders[k], path + ".borders[" + std::to_string(k) + "]", r));
+  if (j.contains("continuity")) {
+    fill.continuity = continuityOf(j["continuity"], path + ".continuity");
+    if (fill.continuity == Continuity::Curvature)
+      fail(ErrorCode::InvalidField, path + ".continuity", "a fill meets its borders with position or tangency continuity");
+  }
+  if (j.contains("centre")) fill.centreGiven = true, fill.centre = vectorField(j["centre"], path + ".centre", r);
+  if (j.contains("normal")) {
+    fill.normalGiven = true;
+    fill.normal = vectorField(j["normal"], path + ".normal", r);
+    if (!(fill.normal.norm() > 0)) fail(ErrorCode::InvalidField, path + ".normal", "the zero vector has no direction");
+    fill.normal.normalize();
+  }
+  if (j.contains("height")) {
+    fill.height = r.number(j["height"], path + ".height");
+    if (std::abs(fill.height) > 100) fail(ErrorCode::InvalidField, path + ".height", "outside [-100, 100]");
+  }
+  // The rest is an ordinary pde patch over v in [0, 2π] whose conditions are all derived.
+  const int order = fill.continuity == Continuity::Position ? 2 : 4;
+  json pde = {{"name", patch.name}, {"kind", "pde"}, {"v_range", json::array({0.0, 2 * M_PI})}, {"boundary", json::object()}};
+  pde["operator"] = j.contains("operator") ? j["operator"]
+                    : order == 2           ? json{{"order", 2}, {"s", 1}, {"t", 1}}
+                                           : json{{"order", 4}, {"b", 1}, {"c", 2}, {"d", 1}};
+  if (j.contains("force")) pde["force"] = j["force"];
+  // The loop's data are piecewise (their cross derivatives jump at the corners): a fixed modal
+  // series with the exact boundary lift, rather than auto's refinement, which would not settle.
+  pde["method"] = j.contains("method") ? j["method"] : json("modal:64");
+  parsePdePatch(pde, path, r, version, patch);
+  patch.kindName = "fill";
+  for (int c = 0; c < 3; ++c)
+    if (patch.op[c].order != order)
+      fail(ErrorCode::InvalidField, path + ".operator",
+           std::string(order == 2 ? "position" : "tangency") + " continuity needs an order-" + std::to_string(order) + " operator; " + kAxis[c] +
+               " has order " + std::to_string(patch.op[c].order));
+}
+
+}  // namespace pdesurf

@@ -1,0 +1,159 @@
+#include "scene/patch_graph.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
+
+std::string number(double x) {
+  std::ostringstream o;
+  o << x;
+  return o.str();
+}
+
+size_t indexOf(const Scene& scene, const std::string& name, const std::string& path, const std::string& self) {
+  for (size_t i = 0; i < scene.patches.size(); ++i)
+    if (scene.patches[i].name == name) {
+      if (name == self) fail(ErrorCode::InvalidField, path + ".patch", "'" + name + "' cannot continue its own border");
+      return i;
+    }
+  fail(ErrorCode::UnknownName, path + ".patch", "no patch named '" + name + "'");
+}
+
+// Which edges a patch has: a surface t0, t1; a pde patch u0, u1 (a fill none: its u = 0 is the
+// loop it closes, its u = 1 a point); a Bézier patch all four.
+void checkEdge(const Patch& p, int edge, const std::string& path, bool surfaceAllowed) {
+  if (p.kind == PatchKind::Primary && !surfaceAllowed)
+    fail(ErrorCode::InvalidField, path + ".patch", "'" + p.name + "' is a surface: an end on a surface names it with \"surface\"");
+  if (p.fill.given) fail(ErrorCode::InvalidField, path + ".patch", "'" + p.name + "' is a fill: its border belongs to the patches it closes");
+  if (p.kind != PatchKind::Bezier && edge > 1)
+    fail(ErrorCode::InvalidField, path + ".at", "'" + p.name + "' is a " + (p.kind == PatchKind::Pde ? "pde patch: its ends are u0 and u1" : "surface: its borders are t0 and t1"));
+}
+
+void depend(Patch& p, const std::string& on) {
+  if (std::find(p.dependsOn.begin(), p.dependsOn.end(), on) == p.dependsOn.end()) p.dependsOn.push_back(on);
+}
+
+void linkEnd(Scene& scene, size_t index, int end) {
+  Patch& blend = scene.patches[index];
+  const EndReference& ref = blend.ends[end];
+  const size_t si = indexOf(scene, ref.patch, ref.path, blend.name);
+  Patch& source = scene.patches[si];
+  checkEdge(source, ref.patchEdge, ref.path, false);
+  if (source.kind == PatchKind::Pde && (source.pde.v0 != blend.pde.v0 || source.pde.v1 != blend.pde.v1))
+    fail(ErrorCode::InvalidField, ref.path + ".patch",
+         "the v_range [" + number(blend.pde.v0) + ", " + number(blend.pde.v1) + "] differs from '" + source.name + "''s [" + number(source.pde.v0) +
+             ", " + number(source.pde.v1) + "]: a chain shares v with the patch it continues");
+  if (ref.reverse && source.kind != PatchKind::Bezier) fail(ErrorCode::InvalidField, ref.path + ".reverse", "only a Bézier border can be run backwards");
+  depend(blend, source.name);
+  Meets m;
+  m.patch = blend.name;
+  m.end = end;
+  m.sourceEdge = ref.patchEdge;
+  m.atT1 = ref.patchEdge % 2 == 1;
+  if (source.kind == PatchKind::Bezier) m.v0 = 0.0, m.v1 = 1.0, m.reversed = ref.reverse;
+  m.by = ref.path;
+  source.meets.push_back(m);
+}
+
+void linkFill(Scene& scene, size_t index) {
+  Patch& fill = scene.patches[index];
+  const size_t n = fill.fill.borders.size();
+  for (size_t k = 0; k < n; ++k) {
+    LoopBorder& b = fill.fill.borders[k];
+    Patch& source = scene.patches[indexOf(scene, b.patch, b.path, fill.name)];
+    checkEdge(source, b.edge, b.path, true);
+    const auto range = edgeRange(source);
+    if (std::isnan(b.from)) b.from = range[0], b.to = range[1];
+    const double slack = 1e-12 * std::max({1.0, std::abs(range[0]), std::abs(range[1])});
+    if (b.from < range[0] - slack || b.to > range[1] + slack)
+      fail(ErrorCode::InvalidField, b.path + ".range",
+           "[" + number(b.from) + ", " + number(b.to) + "] is not inside the range [" + number(range[0]) + ", " + number(range[1]) + "] of " +
+               edgeName(source, b.edge) + " of '" + source.name + "'");
+    depend(fill, source.name);
+    Meets m;
+    m.patch = fill.name;
+    m.end = 0;
+    m.atT1 = b.edge % 2 == 1;
+    m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
+    m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
+    m.targetFrom = 2 * M_PI * k / n, m.targetTo = 2 * M_PI * (k + 1) / n;
+    m.by = b.path;
+    source.meets.push_back(m);
+  }
+}
+
+// Depth-first over dependsOn: every patch after what it depends on; a patch met again while
+// its own dependencies are being visited closes a cycle.
+struct Order {
+  const Scene& scene;
+  std::vector<int> state;  // 0 new, 1 on the path, 2 done
+  std::vector<size_t> path, out;
+
+  size_t find(const std::string& name) const {
+    for (size_t i = 0; i < scene.patches.size(); ++i)
+      if (scene.patches[i].name == name) return i;
+    throw Error(ErrorCode::Internal, "no patch '" + name + "'");
+  }
+
+  void visit(size_t i) {
+    if (state[i] == 2) return;
+    if (state[i] == 1) {
+      std::string cycle;
+      const auto start = std::find(path.begin(), path.end(), i);
+      for (auto it = start; it != path.end(); ++it) cycle += "'" + scene.patches[*it].name + "' -> ";
+      cycle += "'" + scene.patches[i].name + "'";
+      const Patch& last = scene.patches[path.back()];
+      fail(ErrorCode::InvalidField, refPath(last, scene.patches[i].name),
+           "a cycle of references: " + cycle + " (each patch's conditions would need the next one solved first)");
+    }
+    state[i] = 1;
+    path.push_back(i);
+    for (const std::string& d : scene.patches[i].dependsOn) visit(find(d));
+    path.pop_back();
+    state[i] = 2;
+    out.push_back(i);
+  }
+
+  static std::string refPath(const Patch& p, const std::string& on) {
+    for (const EndReference& e : p.ends)
+      if (e.given && e.patch == on) return e.path;
+    for (const LoopBorder& b : p.fill.borders)
+      if (b.patch == on) return b.path;
+    return p.fill.path;
+  }
+};
+
+}  // namespace
+
+std::array<double, 2> edgeRange(const Patch& p) {
+  if (p.kind == PatchKind::Bezier) return {0.0, 1.0};
+  if (p.kind == PatchKind::Primary) return {p.primary.v0, p.primary.v1};
+  return {p.pde.v0, p.pde.v1};
+}
+
+std::string edgeName(const Patch& p, int edge) {
+  if (p.kind == PatchKind::Primary) return edge ? "t1" : "t0";
+  return kBezierEdge[edge];
+}
+
+void linkPatches(Scene& scene) {
+  for (size_t i = 0; i < scene.patches.size(); ++i) {
+    Patch& p = scene.patches[i];
+    if (p.kind != PatchKind::Pde) continue;
+    for (int end = 0; end < 2; ++end)
+      if (p.ends[end].given && !p.ends[end].patch.empty()) linkEnd(scene, i, end);
+    if (p.fill.given) linkFill(scene, i);
+  }
+  Order order{scene, std::vector<int>(scene.patches.size(), 0), {}, {}};
+  for (size_t i = 0; i < scene.patches.size(); ++i) order.visit(i);
+  scene.solveOrder = std::move(order.out);
+}
+
+}  // namespace pdesurf
