@@ -57,7 +57,7 @@ EdgeExprs bezierEdge(const SolvedPatch& sp, int edge, int derivatives) {
     }
     e.X[c] = bernsteinPolynomial(x);
     e.out[c] = bernsteinPolynomial(d);
-    if (derivatives >= 2) e.outOut[c] = bernsteinPolynomial(dd);
+    e.outOut[c] = derivatives >= 2 ? bernsteinPolynomial(dd) : constant(0.0);
   }
   e.a0 = 0.0, e.a1 = 1.0;
   return e;
