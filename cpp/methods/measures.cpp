@@ -19,14 +19,14 @@ double relativeError(const SeparableSurface& ref, const SeparableSurface& other,
   return sum / (static_cast<double>(Iu) * Jv);
 }
 
-double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s) {
+double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s, int samples) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     const ComponentProblem& cp = p.component[c];
     for (int end = 0; end < 2; ++end)
       for (size_t i = 0; i < cp.left.size(); ++i)
-        for (int k = 0; k <= 200; ++k) {
-          const double v = p.v0 + (p.v1 - p.v0) * k / 200;
+        for (int k = 0; k <= samples; ++k) {
+          const double v = p.v0 + (p.v1 - p.v0) * k / samples;
           const double want = expansionValue((end == 0 ? cp.left : cp.right)[i], v);
           const double got = evalComponent(s, c, end, v, static_cast<int>(i), 0);
           worst = std::max(worst, std::abs(got - want) / std::max(1.0, std::abs(want)));

@@ -12,7 +12,7 @@ double relativeError(const SeparableSurface& reference, const SeparableSurface& 
 
 // The largest boundary-condition error of any component, end and derivative order over 201
 // v-samples, relative to max(1, |prescribed value|).
-double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s);
+double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s, int samples = 200);
 
 // The largest |L X - f| over an interior 21×21 grid, relative to max(1, Σ |parts|) at each point.
 double pdeResidual(const PdeProblem& p, const SeparableSurface& s);

@@ -3,6 +3,7 @@
 
 #include "common/errors.hpp"
 #include "bezier/bezier_solver.hpp"
+#include "methods/measures.hpp"
 #include "methods/method.hpp"
 #include "analysis/fill_centre.hpp"
 #include "basis/general_function.hpp"
@@ -87,6 +88,8 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 
 namespace {
 
+constexpr double kBoundaryMiss = 1e-6;
+
 bool sameFunction(const VFunction& a, const VFunction& b) {
   if (a.isGeneral() != b.isGeneral()) return false;
   // Expressions are interned: the same expression is the same node while either is alive.
@@ -139,6 +142,17 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
   }
   try {
     MethodSolution solution = solveWithMethod(pde, m, cache ? &cache->bases : nullptr);
+    // Every method meets its boundary data exactly by construction; one that did not (a force
+    // beyond its expansion, rounding run away) must not be drawn as if it had.
+    // So far only forces were found to do it (docs/limits.md): the check runs where there is one.
+    bool forced = false;
+    for (const ComponentProblem& c : pde.component) forced = forced || !c.force.empty() || !c.generalForce.empty();
+    if (forced && m.kind != MethodKind::Fourier && m.kind != MethodKind::PseudoSpectral) {
+      const double missed = boundaryConditionError(pde, solution.surface, 32);
+      if (std::isfinite(missed) && missed > kBoundaryMiss)
+        throw Error(ErrorCode::Singular, methodName(solution.used) + " missed the boundary conditions by " + std::to_string(missed) +
+                                             " (relative): the data or the force are beyond what it can expand; try another method");
+    }
     if (patch.fill.given) checkFillRegular(patch, solution.surface);
     SolvedPatch out{&patch, std::move(solution.surface), solution.used, {}, 0.0, 0.0, problem, false};
     if (cache) cache->solved[patch.name] = SolveMemo{pde, m, out.surface, out.used};

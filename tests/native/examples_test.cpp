@@ -41,12 +41,16 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
     for (const SolvedPatch& sp : solved) {
       CAPTURE(sp.patch->name);
       if (sp.patch->kind == PatchKind::Pde) {
-        CHECK(boundaryError(sp.patch->pde, sp.surface) < 1e-10);
+        // The problem solved: with the conditions derived from other patches (chains, fills).
+        const PdeProblem& pde = sp.pde();
+        CHECK(boundaryError(pde, sp.surface) < 1e-10);
         // The closed form solves exactly; a general method (auto's modal) meets the boundary
         // data exactly and approximates the interior: its residual relative to the largest
         // operator term (interiorResidual, methods/measures.hpp; fig5 1.5e-10, ref-pipe-tjoint 2e-11).
-        if (sp.used.kind == MethodKind::Closed) CHECK(testing::pdeResidual(sp.patch->pde, sp.surface) < 1e-9);
-        else CHECK(interiorResidual(sp.patch->pde, sp.surface).relative < 1e-9);
+        // A fill's loop has corners, where its cross derivatives turn: its residual there is
+        // the corner's, not the method's (docs/fills.md); its joins and centre are judged instead.
+        if (sp.used.kind == MethodKind::Closed) CHECK(testing::pdeResidual(pde, sp.surface) < 1e-9);
+        else if (!sp.patch->fill.given) CHECK(interiorResidual(pde, sp.surface).relative < 1e-9);
       }
       const Mesh m = tessellate(sp.surface, 32, 48);
       REQUIRE(m.vertexCount() == 33u * 49u);
