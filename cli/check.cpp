@@ -40,7 +40,7 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
                         {"worst_u", p.r.u}, {"worst_v", p.r.v}});
   json centres = json::array();
   for (const FillCentre& c : r.centres)
-    centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
+    centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"normal_spread_outer_deg", c.normalSpreadOuterDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
                        {"curvature_ratio", c.curvatureRatio}, {"ok", c.ok}});
   return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"centres", centres}, {"crossings", crossings}, {"interior", interior}};
 }
@@ -68,8 +68,8 @@ int runCheck(const Options& o, std::ostream& out) {
     out << line;
   }
   for (const FillCentre& c : r.centres) {
-    std::snprintf(line, sizeof line, "centre %s: normal spread %.2e deg  fold %s  curvature %.3g (ratio %.2f to the outer rings)  %s\n", c.patch.c_str(),
-                  c.normalSpreadDeg, c.fold ? "YES" : "no", c.curvatureNear, c.curvatureRatio, c.ok ? "ok" : "FAILS");
+    std::snprintf(line, sizeof line, "centre %s: normal spread %.2e deg (%.2e deg 2^-6 out)  fold %s  curvature %.3g (ratio %.2f to the outer rings)  %s\n", c.patch.c_str(),
+                  c.normalSpreadDeg, c.normalSpreadOuterDeg, c.fold ? "YES" : "no", c.curvatureNear, c.curvatureRatio, c.ok ? "ok" : "FAILS");
     out << line;
   }
   for (const PatchResidual& p : res) {

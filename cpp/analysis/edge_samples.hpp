@@ -17,5 +17,7 @@ struct EdgePoint {
 // The edge u = end (alongU false: it runs along v over [a0, a1]) or v = end (alongU true: it
 // runs along u over [a0, a1]) of `surface`, at `samples` evenly spaced points (both ends).
 std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU, int end, double a0, double a1, int samples);
+// The same at the given parameters along the edge (point by point: for few, uneven samples).
+std::vector<EdgePoint> edgeSamplesAt(const SeparableSurface& surface, bool alongU, int end, const std::vector<double>& at);
 
 }  // namespace pdesurf

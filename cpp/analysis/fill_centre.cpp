@@ -75,14 +75,20 @@ FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s)
   for (int j = 0; j <= kAround && !r.fold; ++j)
     if (a.n[static_cast<size_t>(j) * kRings + kRings - 1].dot(b.n[static_cast<size_t>(j) * (kInner + 1)]) < 0)
       r.fold = true, r.foldU = outer.u1, r.foldV = s.v0 + dv * j;
-  // The innermost ring: the spread of its normals about their mean.
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int j = 0; j < kAround; ++j) mean += b.n[static_cast<size_t>(j) * (kInner + 1) + kInner];
-  mean.normalize();
-  for (int j = 0; j < kAround; ++j) {
-    const Eigen::Vector3d& n = b.n[static_cast<size_t>(j) * (kInner + 1) + kInner];
-    r.normalSpreadDeg = std::max(r.normalSpreadDeg, std::atan2(n.cross(mean).norm(), n.dot(mean)) * 180.0 / M_PI);
-  }
+  // A ring's spread: the largest angle of its normals from their mean.
+  const auto spread = [&](int ring) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int j = 0; j < kAround; ++j) mean += b.n[static_cast<size_t>(j) * (kInner + 1) + ring];
+    mean.normalize();
+    double worst = 0.0;
+    for (int j = 0; j < kAround; ++j) {
+      const Eigen::Vector3d& n = b.n[static_cast<size_t>(j) * (kInner + 1) + ring];
+      worst = std::max(worst, std::atan2(n.cross(mean).norm(), n.dot(mean)) * 180.0 / M_PI);
+    }
+    return std::isfinite(worst) ? worst : 180.0;
+  };
+  r.normalSpreadDeg = spread(kInner);
+  r.normalSpreadOuterDeg = spread(0);
   // Curvature: the three innermost rings against the three outermost of the inner grid.
   double far = 0.0;
   for (int j = 0; j < kAround; ++j)
@@ -91,8 +97,8 @@ FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s)
       r.curvatureNear = std::max(r.curvatureNear, b.k[static_cast<size_t>(j) * (kInner + 1) + kInner - i]);
     }
   r.curvatureRatio = far > 0 ? r.curvatureNear / far : (r.curvatureNear > 0 ? INFINITY : 1.0);
-  if (!std::isfinite(r.normalSpreadDeg)) r.normalSpreadDeg = 180.0;
-  r.ok = !r.fold && r.normalSpreadDeg <= kCentreSpreadDeg && std::isfinite(r.curvatureNear) && r.curvatureRatio <= kCentreCurvatureRatio;
+  const bool normalDefined = r.normalSpreadDeg <= kCentreSpreadDeg || r.normalSpreadDeg * kCentreSpreadFall <= r.normalSpreadOuterDeg;
+  r.ok = !r.fold && normalDefined && std::isfinite(r.curvatureNear) && r.curvatureRatio <= kCentreCurvatureRatio;
   return r;
 }
 

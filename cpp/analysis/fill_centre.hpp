@@ -1,7 +1,7 @@
 // A fill's centre (docs/fills.md): its border u = 1 collapses to one point, which must be a
 // regular point of the surface. Measured from analytic derivatives of the solved fill:
 //   the normal on rings closing in on the centre converges (its spread around the ring, in
-//   degrees, at the innermost ring u = 1 - 2^-12);
+//   degrees, at u = 1 - 2^-6 and at the innermost ring u = 1 - 2^-12);
 //   no fold: the normal X_u × X_v never turns over between neighbouring samples of a 48 × 96
 //   grid and of a 12 × 96 grid over u in [1 - 2^-6, 1 - 2^-12];
 //   curvature bounded: the largest principal curvature on the inner grid's three innermost
@@ -15,7 +15,8 @@ namespace pdesurf {
 
 struct FillCentre {
   std::string patch;
-  double normalSpreadDeg = 0.0;  // at u = 1 - 2^-12
+  double normalSpreadDeg = 0.0;       // at u = 1 - 2^-12
+  double normalSpreadOuterDeg = 0.0;  // at u = 1 - 2^-6: a defined normal converges from it
   bool fold = false;
   double foldU = 0.0, foldV = 0.0;  // where the first fold was found
   double curvatureNear = 0.0;    // largest |principal curvature| next to the centre
@@ -23,7 +24,11 @@ struct FillCentre {
   bool ok = false;
 };
 
+// The normal is defined when the innermost ring's spread is below kCentreSpreadDeg or has
+// fallen at least kCentreSpreadFall times from 2^-6 away (linearly it falls 64 times; a cone's
+// does not fall at all).
 constexpr double kCentreSpreadDeg = 0.1;
+constexpr double kCentreSpreadFall = 8.0;
 constexpr double kCentreCurvatureRatio = 2.0;
 
 FillCentre measureFillCentre(const std::string& name, const SeparableSurface& fill);

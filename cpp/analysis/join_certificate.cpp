@@ -99,6 +99,14 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   const auto sample = part ? openEdgeSamples : edgeSamples;
   const auto B = sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
   auto P = sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
+  if (m.eased) {  // the fill's evenly spaced samples, at the edge's parameters they map to
+    std::vector<double> at;
+    for (int k = 0; k < kJoinSamples; ++k) {
+      const double w = (k + 0.5) / kJoinSamples, sigma = w - kFillEase * std::sin(2 * M_PI * w) / (2 * M_PI);
+      at.push_back(p0 + (p1 - p0) * sigma);
+    }
+    P = edgeSamplesAt(prim.surface, source.alongU, source.end, at);
+  }
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
   const double floor = 1e-9 * size;

@@ -26,6 +26,7 @@ namespace {
 
 constexpr int kPerSide = 96;          // samples per border for the loop's figures
 constexpr double kCloseTolerance = 1e-8;  // of the loop's size: a gap beyond this is refused
+constexpr double kInside = 1e-9;          // of a side's length: where its corner values are taken
 
 [[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
@@ -43,6 +44,8 @@ Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
 
 struct Side {
   Vec3Expr X, D;   // in the fill's v
+  Vec3Expr T;      // the edge's tangent along its own parameter (times the part's length): never 0
+  Expr sigma;      // the side's parameter 0..1 as a function of v (see sideOf)
   double v0 = 0, v1 = 0;
   std::string name;  // "'rear' u0", for messages
   std::vector<Eigen::Vector3d> x, d;  // samples at kPerSide + 1 evenly spaced v (ends included)
@@ -56,19 +59,26 @@ Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangen
   Side s;
   s.v0 = 2 * M_PI * k / n, s.v1 = 2 * M_PI * (k + 1) / n;
   s.name = "'" + b.patch + "' " + edgeName(*source.patch, b.edge);
-  // s(v) = from + (to - from) (v - v0) / (v1 - v0), or from `to` back to `from`.
-  const double a = b.reverse ? b.to : b.from, slope = ((b.reverse ? b.from : b.to) - a) / (s.v1 - s.v0);
-  const Expr param = add(constant(a - slope * s.v0), multiply(constant(slope), variable(ExprVar::V)));
+  // The edge's parameter runs from `from` to `to` (or back) as σ runs 0..1, with w = (v - v0) /
+  // (v1 - v0) and σ = w - sin(2πw) / 2π, whose speed vanishes at both ends: at the loop's
+  // corners, where the sides' tangents and cross derivatives turn, the loop's position and
+  // cross derivative are then C1 in v (both one-sided v-derivatives are 0), so the fill's
+  // series does not ring there. A single closed border has no corner: σ = w.
+  const double a = b.reverse ? b.to : b.from, span = (b.reverse ? b.from : b.to) - a;
+  const Expr w = divide(subtract(variable(ExprVar::V), constant(s.v0)), constant(s.v1 - s.v0));
+  s.sigma = n == 1 ? w : subtract(w, multiply(constant(kFillEase / (2 * M_PI)), call(ExprFn::Sin, multiply(constant(2 * M_PI), w))));
+  const Expr param = add(constant(a), multiply(constant(span), s.sigma));
   for (int c = 0; c < 3; ++c) {
     s.X[c] = substitute(e.X[c], ExprVar::V, param);
     s.D[c] = tangency ? substitute(e.out[c], ExprVar::V, param) : constant(0.0);
+    s.T[c] = tangency ? multiply(constant(span), substitute(derivative(e.X[c], ExprVar::V), ExprVar::V, param)) : constant(0.0);
   }
   for (int i = 0; i <= kPerSide; ++i) {
     const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
     s.x.push_back(eval3(s.X, v));
     s.d.push_back(eval3(s.D, v));
     if (!s.x.back().allFinite() || !s.d.back().allFinite())
-      fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at its parameter " + number(a + slope * (v - s.v0)));
+      fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at v = " + number(v));
   }
   return s;
 }
@@ -153,13 +163,9 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   // At each corner the two sides' cross derivatives differ (by up to the corner's angle): left
   // so, the fill's iso-u curves would turn back on themselves there and fold. Adding a part of
   // the side's own tangent T keeps the tangent plane (G1 is untouched) and lets both sides
-  // leave the corner along one vector W, the mean of their cross derivatives: along side k,
-  // X_u = γ(v) k_k D_k + α(v) T_k, with (γ, α) linear between the values that give W at its
-  // two corners (1, 0 where W is out of the side's tangent plane or turns back).
+  // leave the corner along one vector W: along side k, X_u = γ k_k D_k + α T_k, with (γ, α)
+  // linear in σ between the values that give W at its two corners (1, 0 where no W fits).
   std::vector<std::array<double, 4>> mix(n, {1.0, 0.0, 1.0, 0.0});  // γ, α at v0; γ, α at v1
-  std::vector<Vec3Expr> tangent(n);
-  for (size_t k = 0; k < n && tangency; ++k)
-    for (int c = 0; c < 3; ++c) tangent[k][c] = derivative(sides[k].X[c], ExprVar::V);
   const auto fit = [](const Eigen::Vector3d& D, const Eigen::Vector3d& T, const Eigen::Vector3d& W, double* gamma, double* alpha) {
     Eigen::Matrix2d A;
     A << D.dot(D), D.dot(T), D.dot(T), T.dot(T);
@@ -169,15 +175,30 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   };
   for (size_t k = 0; k < n && tangency; ++k) {
     const Side &s = sides[k], &next = sides[(k + 1) % n];
-    const Eigen::Vector3d De = scale[k] * s.d.back(), Ds = scale[(k + 1) % n] * next.d.front();
-    const Eigen::Vector3d W = (De + Ds) / 2;
-    if (!(W.norm() > 0.05 * std::max(De.norm(), Ds.norm()))) continue;  // the sides leave in opposite directions
-    fit(De, eval3(tangent[k], s.v1), W, &mix[k][2], &mix[k][3]);
-    fit(Ds, eval3(tangent[(k + 1) % n], next.v0), W, &mix[(k + 1) % n][0], &mix[(k + 1) % n][1]);
+    // One-sided, just inside each side: a border may have a kink exactly at the corner, where
+    // its expression's derivative is the mean of the two sides'.
+    const double ve = s.v1 - kInside * (s.v1 - s.v0), vs = next.v0 + kInside * (next.v1 - next.v0);
+    const Eigen::Vector3d De = scale[k] * eval3(s.D, ve), Ds = scale[(k + 1) % n] * eval3(next.D, vs);
+    const Eigen::Vector3d Te = eval3(s.T, ve), Ts = eval3(next.T, vs);
+    // First choice: W where the two sides' lines De + αTe and Ds + βTs cross, so each side keeps
+    // its own cross derivative (γ = 1): a corner of any angle short of straight.
+    Eigen::Matrix<double, 3, 2> A;
+    A << Te, -Ts;
+    const Eigen::Vector2d ab = A.colPivHouseholderQr().solve(Ds - De);
+    const Eigen::Vector3d W = De + ab(0) * Te;
+    const double longest = 4 * std::max(De.norm(), Ds.norm());
+    if (ab.allFinite() && (A * ab - (Ds - De)).norm() <= 1e-6 * longest && W.norm() <= longest) {
+      mix[k][3] = ab(0), mix[(k + 1) % n][1] = ab(1);
+      continue;
+    }
+    // Else the mean of the two, reached with γ != 1 where it can be.
+    const Eigen::Vector3d mean = (De + Ds) / 2;
+    if (!(mean.norm() > 0.05 * std::max(De.norm(), Ds.norm()))) continue;  // the sides leave in opposite directions
+    fit(De, Te, mean, &mix[k][2], &mix[k][3]);
+    fit(Ds, Ts, mean, &mix[(k + 1) % n][0], &mix[(k + 1) % n][1]);
   }
-  const auto linear = [](double a, double b, double v0, double v1) {
-    return add(constant(a - (b - a) * v0 / (v1 - v0)), multiply(constant((b - a) / (v1 - v0)), variable(ExprVar::V)));
-  };
+  // From a at the side's start to b at its end, in σ (so its v-derivative too is 0 at corners).
+  const auto linear = [](double a, double b, const Expr& sigma) { return add(constant(a), multiply(constant(b - a), sigma)); };
 
   for (int c = 0; c < 3; ++c) {
     Expr x, d;
@@ -187,8 +208,8 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
       x = x ? add(x, multiply(chi, s.X[c])) : multiply(chi, s.X[c]);
       if (!tangency) continue;
       const auto& m = mix[k];
-      Expr dk = multiply(linear(m[0], m[2], s.v0, s.v1), multiply(constant(scale[k]), s.D[c]));
-      if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.v0, s.v1), tangent[k][c]));
+      Expr dk = multiply(linear(m[0], m[2], s.sigma), multiply(constant(scale[k]), s.D[c]));
+      if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.sigma), s.T[c]));
       dk = multiply(chi, dk);
       d = d ? add(d, dk) : dk;
     }

@@ -84,6 +84,7 @@ void linkFill(Scene& scene, size_t index) {
     m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
     m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
     m.targetFrom = 2 * M_PI * k / n, m.targetTo = 2 * M_PI * (k + 1) / n;
+    m.eased = n > 1;
     m.by = b.path;
     source.meets.push_back(m);
   }

@@ -99,7 +99,14 @@ struct Meets {
   // Version 4, a fill (PatchKind::Pde with a loop): the part [from, to] of the fill's border
   // u = 0 (its v) that meets this edge; NaN: the target's whole border.
   double targetFrom = NAN, targetTo = NAN;
+  // A fill's side: its part maps onto [v0, v1] through σ(w) = w - kFillEase sin(2πw)/2π, not
+  // linearly (scene/fill_conditions.cpp).
+  bool eased = false;
 };
+
+// How much a fill's sides slow down at the loop's corners: their speed there is 1 - kFillEase
+// of the mean (scene/fill_conditions.cpp).
+constexpr double kFillEase = 0.5;
 
 // Version 4: one border of a fill's loop, or the edge a chained end continues: an edge of
 // another patch (a surface's t0/t1, a pde patch's u0/u1, a Bézier border), optionally a part

@@ -24,7 +24,7 @@ def polygon(n, cx, cy, radius, turn, prefix):
         Z = "a*(%s)^2 + b*(%s)^2 + c*(%s)*(%s)" % (X, Y, X, Y)
         name = "%s_strip%d" % (prefix, k)
         patches.append({"name": name, "kind": "surface", "t_range": [0, 1], "v_range": [0, 1], "x": X, "y": Y, "z": Z})
-        borders.append({"patch": name, "at": "t0", "power": 0.5 if n == 3 else 1})
+        borders.append({"patch": name, "at": "t0"})
     patches.append({"name": prefix, "kind": "fill", "borders": borders, "height": "lift"})
     return patches
 
@@ -38,7 +38,7 @@ scene = {
     "each ringed by strips of the sheet and closed by a fill: a 4th-order PDE patch whose border u = 0 runs once around "
     "the hole (piecewise, one side per strip) and whose u = 1 is a regular centre. Every fill meets every strip G1 "
     "(the certificate checks each side on its open interval); the centres' normals converge and nothing folds. "
-    "lift raises each centre along the hole's normal (1: by the strips' own rise). The triangle's borders take power 0.5: at full length its 60° corners fold the fill (a named error).",
+    "lift raises each centre along the hole's normal (1: by the strips' own rise).",
     "source": {"paper": "seed 000, Fig. 8: models of many patches", "figure": "Fig. 8c"},
     "parameters": {
         "a": {"value": 0.12, "min": -0.3, "max": 0.3, "label": "curvature along x (a x²)"},

@@ -57,9 +57,14 @@ const SolvedPatch& named(const std::vector<SolvedPatch>& s, const std::string& n
 TEST_CASE("a fill closes N-sided holes G1 with a regular centre, N = 3..6, random curved surroundings") {
   std::mt19937 rng(2026);
   std::uniform_real_distribution<double> coef(-0.4, 0.4), turn(0, 1);
-  for (int trial = 0; trial < 8; ++trial) {
+  for (int trial = 0; trial < 24; ++trial) {
     const int n = 3 + trial % 4;
-    const Scene scene = parseScene(polygonScene(n, coef(rng), coef(rng), coef(rng), turn(rng)).dump());
+    const double a = coef(rng), b = coef(rng), c = coef(rng), t = turn(rng);
+    CAPTURE(a);
+    CAPTURE(b);
+    CAPTURE(c);
+    CAPTURE(t);
+    const Scene scene = parseScene(polygonScene(n, a, b, c, t).dump());
     const auto solved = solveScene(scene);
     const SceneReport r = checkScene(scene, solved, 32);
     CAPTURE(n);
@@ -69,13 +74,13 @@ TEST_CASE("a fill closes N-sided holes G1 with a regular centre, N = 3..6, rando
       CHECK(j.patch == "fill");
       CHECK(j.level == 1);
       CHECK(j.g0 < 1e-12);
-      CHECK(j.g1Deg < 1e-9);
+      CHECK(j.g1Deg < 1e-8);
       CHECK(!j.fold);
       CHECK(j.ok);
     }
     REQUIRE(r.centres.size() == 1);
     CHECK(!r.centres[0].fold);
-    CHECK(r.centres[0].normalSpreadDeg < kCentreSpreadDeg);
+    CHECK((r.centres[0].normalSpreadDeg < kCentreSpreadDeg || r.centres[0].normalSpreadDeg * kCentreSpreadFall <= r.centres[0].normalSpreadOuterDeg));
     CHECK(r.centres[0].curvatureRatio < kCentreCurvatureRatio);
     CHECK(r.crossings.empty());
     CHECK(r.ok);
