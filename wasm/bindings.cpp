@@ -50,6 +50,12 @@ val endsOf(const Patch& p) {
     const EndReference& e = p.ends[end];
     if (!e.given) continue;
     val o = val::object();
+    if (!e.patch.empty()) {  // a chain (version 4): its conditions are derived when solved
+      o.set("patch", e.patch);
+      o.set("at", std::string(kBezierEdge[e.patchEdge]));
+      ends.set(end ? "u1" : "u0", o);
+      continue;
+    }
     o.set("surface", e.surface);
     val derived = val::object();
     const char* axis[3] = {"x", "y", "z"};
@@ -152,6 +158,19 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
       crossings.call<void>("push", o);
     }
     report.set("crossings", crossings);
+    val centres = val::array();  // every fill's centre (version 4)
+    for (const FillCentre& c : r.centres) {
+      val o = val::object();
+      o.set("patch", c.patch);
+      o.set("normalSpreadDeg", c.normalSpreadDeg);
+      o.set("normalSpreadOuterDeg", c.normalSpreadOuterDeg);
+      o.set("fold", c.fold);
+      o.set("curvatureNear", c.curvatureNear);
+      o.set("curvatureRatio", c.curvatureRatio);
+      o.set("ok", c.ok);
+      centres.call<void>("push", o);
+    }
+    report.set("centres", centres);
   } catch (const Error& e) {
     // A scene whose declared join is wrong still draws; the report says why it cannot certify.
     val err = val::object();
@@ -176,6 +195,14 @@ int gridArg(const val& v, const char* name) {
   return static_cast<int>(x);  // the range: checkGrid
 }
 
+// What a kept mesh was made from: a pde patch's memoised solve (SolvedPatch::solveId) on a grid.
+struct MeshSource {
+  uint64_t solve = 0;  // 0: not reusable
+  int nu = 0, nv = 0;
+  bool curvature = false;
+  bool operator==(const MeshSource& o) const { return solve != 0 && solve == o.solve && nu == o.nu && nv == o.nv && curvature == o.curvature; }
+};
+
 val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvArg, bool curvature, bool joins, bool crossings,
                  bool topology) {
   try {
@@ -190,19 +217,35 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
     // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
     // buffers, uvs and indices are reused instead of rebuilt.
     static std::vector<Mesh> meshes;
+    static std::vector<MeshSource> meshSources;
     if (meshes.size() < solved.size()) meshes.resize(solved.size());
+    if (meshSources.size() < meshes.size()) meshSources.resize(meshes.size());
     val patches = val::array();
     for (size_t k = 0; k < solved.size(); ++k) {
       const SolvedPatch& sp = solved[k];
       Mesh& m = meshes[k];
-      try {
-        tessellateInto(sp.surface, nu, nv, m, curvature);
-      } catch (const Error& e) {
-        throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+      // A patch the cache did not solve again (an edit upstream of nothing it depends on) keeps
+      // its mesh when that mesh was made from the same solve on the same grid.
+      MeshSource& from = meshSources[k];
+      const MeshSource now{sp.solveId, nu, nv, curvature};
+      if (!(from == now)) {
+        try {
+          tessellateInto(sp.surface, nu, nv, m, curvature);
+        } catch (const Error& e) {
+          from = MeshSource{};
+          throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+        }
       }
+      from = now;
       val p = val::object();
       p.set("name", sp.patch->name);
       p.set("kind", sp.patch->kindName);
+      if (!sp.patch->dependsOn.empty()) {  // the patches its conditions come from (the outliner's chain)
+        val on = val::array();
+        for (const std::string& d : sp.patch->dependsOn) on.call<void>("push", d);
+        p.set("dependsOn", on);
+      }
+      p.set("reused", sp.reused);
       if (sp.patch->kind == PatchKind::Pde) {
         p.set("operator", operatorOf(*sp.patch));
         if (sp.patch->ends[0].given || sp.patch->ends[1].given) p.set("ends", endsOf(*sp.patch));
@@ -232,7 +275,7 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
     if (joins) r.set("report", reportOf(scene, solved, crossings));
     // The wasm heap never shrinks; at least hand large meshes back to the allocator, so a
     // one-off big grid does not stay held by the cache (the next solve reuses the memory).
-    if (static_cast<size_t>(nu + 1) * (nv + 1) > size_t{513} * 513) std::vector<Mesh>().swap(meshes);
+    if (static_cast<size_t>(nu + 1) * (nv + 1) > size_t{513} * 513) std::vector<Mesh>().swap(meshes), meshSources.clear();
     return r;
   } catch (const Error& e) {
     return failure(errorCodeName(e.code()), e.what());

@@ -7,7 +7,7 @@ import { buildBuildFolder } from './ui/build-controls.js';
 import { buildOutliner } from './ui/outliner.js';
 import { buildPlacementFolder } from './ui/placement-controls.js';
 import { addSurface, libraryEntry } from './state/surface-library.js';
-import { addBlend, addFill } from './state/scene-join.js';
+import { addBlend, addFill, addLoopFill } from './state/scene-join.js';
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
 import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
 import { messageOf } from './state/document.js';
@@ -49,7 +49,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       if (r.ok) doc.select(r.result);
     },
     onBlend: (a, b, options) => makeBlend(a, b, options),
-    onFill: (borders) => makeFill(borders),
+    onFill: (borders, options) => makeFill(borders, options),
     onPickMode: (kind) => setPickMode(kind),
   });
 
@@ -87,12 +87,13 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     if (r.ok) doc.select(r.result);
   }
 
-  function makeFill(borders) {
+  function makeFill(borders, options = {}) {
     const list = viewer.borders.list();
     const endpoints = borders.map((b) => list.find((d) => d.patch === b.surface && d.border === b.at)?.endpoints);
+    const add = options.kind === 'pde' ? addLoopFill : addFill;
     const r = build('fill', (s) => {
       if (endpoints.some((e) => !e)) throw new Error('a border that is not drawn yet cannot be filled: wait for the solve');
-      return addFill(s.scene, borders, endpoints);
+      return add(s.scene, borders, endpoints);
     }, { checked: true, said: (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}` });
     folder.clearChoices();
     viewer.borders.highlight([]);
@@ -113,7 +114,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
         const chosen = folder.picked(pickMode, border);
         viewer.borders.highlight(chosen.map((c) => ({ patch: c.surface, border: c.at })));
         if (pickMode === 'blend' && chosen.length === 2) makeBlend(chosen[0], chosen[1], folder.blendOptions());
-        if (pickMode === 'fill' && chosen.length === 4) makeFill(chosen);
+        // A Bézier fill is made at the fourth pick; a PDE fill at the sixth, or by its button.
+        const kind = folder.fillKind();
+        if (pickMode === 'fill' && chosen.length === (kind === 'pde' ? 6 : 4)) makeFill(chosen, { kind });
       },
     });
   }

@@ -197,7 +197,9 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     hooks.lastError = null;
     if (!hooks.ready) hooks.readyAt = performance.now(); // first surface, from navigation start
     // The page path of this solve (request to drawn) against the worker's own time.
-    hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid };
+    hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid,
+      // Which pde patches the module solved again (the others' problems did not change).
+      resolved: result.patches.filter((p) => p.reused === false && (p.kind === 'pde' || p.kind === 'fill')).map((p) => p.name) };
     hooks.ready = true;
     const { nu, nv } = job.grid;
     const n = result.patches.length;

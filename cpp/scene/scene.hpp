@@ -4,6 +4,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -208,6 +209,7 @@ struct SolvedPatch {
   // (null: the patch's own pde).
   std::shared_ptr<const PdeProblem> problem;
   bool reused = false;  // the same problem as the cache's last solve of this patch: not re-solved
+  uint64_t solveId = 0;  // with a cache, pde only: which solve made `surface` (a mesh made from it stays valid)
   const PdeProblem& pde() const { return problem ? *problem : patch->pde; }
 };
 
@@ -226,11 +228,13 @@ struct SolveMemo {
   Method method;
   SeparableSurface surface;
   Method used;
+  uint64_t id = 0;
 };
 struct SolveCache {
   BasisCache bases;
   BezierSolverCache bezier;
   std::map<std::string, SolveMemo> solved;
+  uint64_t solves = 0;  // ids for SolveMemo::id
 };
 
 // Throws, message prefixed with the patch name. `method` overrides the patch's own. A patch

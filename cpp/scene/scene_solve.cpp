@@ -136,7 +136,7 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
   if (cache) {
     const auto it = cache->solved.find(patch.name);
     if (it != cache->solved.end() && sameMethod(it->second.method, m) && sameProblem(it->second.problem, pde)) {
-      SolvedPatch out{&patch, it->second.surface, it->second.used, {}, 0.0, 0.0, problem, true};
+      SolvedPatch out{&patch, it->second.surface, it->second.used, {}, 0.0, 0.0, problem, true, it->second.id};
       return out;
     }
   }
@@ -155,7 +155,10 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
     }
     if (patch.fill.given) checkFillRegular(patch, solution.surface);
     SolvedPatch out{&patch, std::move(solution.surface), solution.used, {}, 0.0, 0.0, problem, false};
-    if (cache) cache->solved[patch.name] = SolveMemo{pde, m, out.surface, out.used};
+    if (cache) {
+      out.solveId = ++cache->solves;
+      cache->solved[patch.name] = SolveMemo{pde, m, out.surface, out.used, out.solveId};
+    }
     return out;
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());
@@ -213,6 +216,8 @@ void solveInOrder(const Scene& scene, const std::vector<size_t>& wanted, std::ve
 }  // namespace
 
 std::vector<SolvedPatch> solveScene(const Scene& scene, SolveCache* cache) {
+  if (cache)  // the memo keeps this scene's patches only
+    for (auto it = cache->solved.begin(); it != cache->solved.end();) it = scene.find(it->first) ? std::next(it) : cache->solved.erase(it);
   std::vector<std::unique_ptr<SolvedPatch>> byIndex(scene.patches.size());
   solveInOrder(scene, scene.solveOrder, byIndex, cache, nullptr, nullptr);
   std::vector<SolvedPatch> out;

@@ -42,7 +42,7 @@ export function cleanSurfaceCopy(surfaces, { forGltf = false } = {}) {
     const base = m.userData.baseMaterial || m.material; // the patch colour, whatever the shading
     const hex = base.color ? base.color.getHex() : 0xcccccc;
     if (!materials.has(hex)) {
-      const kindName = m.userData.kind === 'pde' || m.userData.kind === 'bezier' ? 'solved' : 'primary';
+      const kindName = m.userData.kind === 'pde' || m.userData.kind === 'fill' || m.userData.kind === 'bezier' ? 'solved' : 'primary';
       materials.set(hex, new THREE.MeshStandardMaterial({
         name: kindName, color: hex, roughness: base.roughness ?? 0.55, metalness: base.metalness ?? 0.05, side: THREE.DoubleSide,
       }));

@@ -125,6 +125,9 @@ function normalisePatch(p) {
     out.gaussCurvature = typed(p.gaussCurvature, Float32Array, 'gaussCurvature');
     out.degenerateVertices = Number(p.degenerateVertices);
   }
+  // Version 4: the patches its conditions come from; whether the module re-used its last solve.
+  if (p.dependsOn !== undefined) out.dependsOn = Array.from(p.dependsOn, String);
+  if (p.reused !== undefined) out.reused = Boolean(p.reused);
   if (p.operator) {
     // Per coordinate: { order, params: { name: value } } with the scene's own names.
     out.operator = {};
@@ -143,6 +146,11 @@ function normalisePatch(p) {
     for (const end of ['u0', 'u1']) {
       const e = p.ends[end];
       if (!e) continue;
+      // Version 4, a chained end: its conditions come from the patch it continues.
+      if (e.patch !== undefined) {
+        out.ends[end] = { patch: String(e.patch), at: String(e.at) };
+        continue;
+      }
       const derived = {};
       for (const axis of ['x', 'y', 'z']) derived[axis] = Array.from(e.derived[axis] || [], String);
       out.ends[end] = { surface: String(e.surface), derived };

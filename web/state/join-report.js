@@ -41,14 +41,30 @@ export function normaliseReport(raw) {
   // Crossings are checked only when asked ({crossings: true}); a module that predates the
   // option always checked them.
   const crossingsChecked = raw.crossingsChecked !== false;
-  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings, crossingsChecked };
+  // Version 4: every fill's centre (analysis/fill_centre.hpp).
+  const centres = Array.from(raw.centres || [], (c) => ({
+    patch: String(c.patch),
+    normalSpreadDeg: num(c.normalSpreadDeg),
+    normalSpreadOuterDeg: num(c.normalSpreadOuterDeg),
+    fold: Boolean(c.fold),
+    curvatureNear: num(c.curvatureNear),
+    curvatureRatio: num(c.curvatureRatio),
+    ok: Boolean(c.ok),
+  }));
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings, crossingsChecked, centres };
   // A declared join the module cannot certify: the scene still draws, the report says why.
   if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
   return out;
 }
 
-/** A stable key for one join: the blend's name and its end. */
-export const joinKey = (j) => `${j.patch}\u0000${j.end}`;
+/** A stable key for one join: the blend's name, its end and what it meets (a fill meets several). */
+export const joinKey = (j) => `${j.patch}\u0000${j.end}\u0000${j.surface}\u0000${j.edge}`;
+
+/** A fill's centre as one line of text (no markup). */
+export function centreText(c) {
+  const spread = (x) => (x === null || !Number.isFinite(x) ? '—' : `${x.toPrecision(2)}°`);
+  return `“${c.patch}” centre: normal spread ${spread(c.normalSpreadDeg)} (from ${spread(c.normalSpreadOuterDeg)}), ${c.fold ? 'folds' : 'no fold'}, curvature ratio ${c.curvatureRatio === null ? '—' : c.curvatureRatio.toFixed(2)}: ${c.ok ? 'regular' : 'NOT regular'}`;
+}
 
 const sig = (x, digits = 2) => {
   if (x === null || !Number.isFinite(x)) return '—';

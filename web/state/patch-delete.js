@@ -9,7 +9,9 @@ const EDGES = ['v0', 'u1', 'v1', 'u0'];
 /**
  * The patches that name surface `name`: [{ patch, kind: 'blend', ends: ['u0', …] }] for
  * blends whose ends are given by reference to it, [{ patch, kind: 'fill', edges: ['v0', …] }]
- * for Bézier fills whose borders lie on it. In scene order.
+ * for Bézier fills whose borders lie on it; version 4: [{ patch, kind: 'chain', ends }] for
+ * pde patches whose ends continue it and [{ patch, kind: 'loop', edges: ['u1', …] }] for
+ * fills whose loop runs over it. In scene order.
  */
 export function dependentsOf(scene, name) {
   const out = [];
@@ -23,8 +25,31 @@ export function dependentsOf(scene, name) {
       const edges = EDGES.filter((e) => isObject(p.borders[e]) && p.borders[e].surface === name);
       if (edges.length) out.push({ patch: p.name, kind: 'fill', edges });
     }
+    // Version 4: ends that continue the patch (chains) and fills whose loop runs over it.
+    if (p.kind === 'pde' && isObject(p.ends)) {
+      const ends = ['u0', 'u1'].filter((e) => isObject(p.ends[e]) && p.ends[e].patch === name);
+      if (ends.length) out.push({ patch: p.name, kind: 'chain', ends });
+    }
+    if (p.kind === 'fill' && Array.isArray(p.borders)) {
+      const edges = p.borders.filter((b) => isObject(b) && b.patch === name).map((b) => String(b.at));
+      if (edges.length) out.push({ patch: p.name, kind: 'loop', edges });
+    }
   }
   return out;
+}
+
+/** Every patch that depends on `name`, directly or through others (chains, loops), in scene order. */
+export function downstreamOf(scene, name) {
+  const seen = new Set([name]);
+  const queue = [name];
+  while (queue.length) {
+    for (const d of dependentsOf(scene, queue.shift())) {
+      if (seen.has(d.patch)) continue;
+      seen.add(d.patch);
+      queue.push(d.patch);
+    }
+  }
+  return patchesOf(scene).filter((p) => isObject(p) && p.name !== name && seen.has(p.name)).map((p) => p.name);
 }
 
 const solvedPatch = (solved, name) => (Array.isArray(solved) ? solved.find((p) => p && p.name === name) : solved?.[name]);
@@ -98,8 +123,13 @@ export function deletePatch(scene, name, options = {}) {
   const replaced = new Map();
   for (const d of deps) {
     const patch = requirePatch(scene, d.patch);
-    if (choice === 'delete') gone.add(d.patch);
-    else replaced.set(patch, d.kind === 'blend' ? detachedBlend(patch, d.ends, options.solved) : detachedFill(patch, d.edges, options.solved));
+    if (choice === 'delete') {
+      // A chain or a fill over what goes is gone too, and so is whatever depends on it.
+      gone.add(d.patch);
+      for (const n of downstreamOf(scene, d.patch)) gone.add(n);
+    } else if (d.kind === 'chain' || d.kind === 'loop') {
+      throw new Error(`${JSON.stringify(d.patch)} continues ${JSON.stringify(name)} (${d.kind === 'chain' ? 'a chained end' : "a fill's loop"}): it cannot be detached; delete it too`);
+    } else replaced.set(patch, d.kind === 'blend' ? detachedBlend(patch, d.ends, options.solved) : detachedFill(patch, d.edges, options.solved));
   }
   // Everything checked: now change the scene.
   scene.patches = scene.patches.filter((p) => !gone.has(p?.name)).map((p) => replaced.get(p) ?? p);

@@ -128,11 +128,15 @@ function checkPoint(p, path) {
  * (at the surface's v0 and v1). Returns [{ index, forward }] in loop order, starting with
  * borders[0] forward; throws when they do not close into a loop within `tol`.
  */
+const COUNT_WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six'];
+
 export function chainBorders(endpoints, tol) {
+  const n = endpoints.length;
+  const count = COUNT_WORDS[n] ?? String(n);
   const order = [{ index: 0, forward: true }];
-  const left = new Set([1, 2, 3]);
+  const left = new Set(endpoints.map((_, k) => k).slice(1));
   let at = endpoints[0][1];
-  for (let step = 1; step < 4; step++) {
+  for (let step = 1; step < n; step++) {
     let best = null;
     for (const k of left) {
       for (const forward of [true, false]) {
@@ -140,13 +144,13 @@ export function chainBorders(endpoints, tol) {
         if (!best || d < best.d) best = { k, forward, d };
       }
     }
-    if (best.d > tol) throw new Error(`borders: the four borders do not form a closed loop: no border starts where border ${order[step - 1].index} ends (nearest ${best.d.toPrecision(3)} away, tolerance ${tol.toPrecision(3)})`);
+    if (best.d > tol) throw new Error(`borders: the ${count} borders do not form a closed loop: no border starts where border ${order[step - 1].index} ends (nearest ${best.d.toPrecision(3)} away, tolerance ${tol.toPrecision(3)})`);
     order.push({ index: best.k, forward: best.forward });
     left.delete(best.k);
     at = endpoints[best.k][best.forward ? 1 : 0];
   }
   const gap = dist(at, endpoints[0][0]);
-  if (gap > tol) throw new Error(`borders: the four borders do not close: the last ends ${gap.toPrecision(3)} from where the first starts (tolerance ${tol.toPrecision(3)})`);
+  if (gap > tol) throw new Error(`borders: the ${count} borders do not close: the last ends ${gap.toPrecision(3)} from where the first starts (tolerance ${tol.toPrecision(3)})`);
   return order;
 }
 
@@ -199,5 +203,46 @@ export function addFill(scene, borders, endpoints, options = {}) {
     borders: { v0: out.v0, u1: out.u1, v1: out.v1, u0: out.u0 },
     // No guiding normals (version 4, λ = 0): the fill is the energy's, between its borders.
   });
+  return name;
+}
+
+/**
+ * Add a PDE fill (kind "fill", docs/chains-and-fills.md) closing a loop of 1 to 6 picked
+ * borders ({ surface, at: 't0' | 't1' }, in any order; one border must be a closed curve),
+ * G1 to each with a regular centre. endpoints[k] = [start, end] as for addFill; the loop's
+ * order and each border's direction are found from them. options: { continuity: 'tangency'
+ * (or 'position'), tolerance, name }. Returns the fill's name.
+ */
+export function addLoopFill(scene, borders, endpoints, options = {}) {
+  if (!Array.isArray(borders) || borders.length < 1 || borders.length > 6) throw new Error('borders: expected 1 to 6 borders');
+  if (!Array.isArray(endpoints) || endpoints.length !== borders.length) throw new Error('endpoints: expected the two ends of each border');
+  const seen = new Set();
+  borders.forEach((b, k) => {
+    if (!isObject(b)) throw new Error(`borders[${k}]: expected { surface, at }`);
+    surfaceOf(scene, b.surface, `borders[${k}]`);
+    if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
+    const key = JSON.stringify([b.surface, b.at]);
+    if (seen.has(key)) throw new Error(`borders[${k}]: ${b.at} of ${JSON.stringify(b.surface)} is picked twice`);
+    seen.add(key);
+    if (!Array.isArray(endpoints[k]) || endpoints[k].length !== 2) throw new Error(`endpoints[${k}]: expected [start, end]`);
+    endpoints[k].forEach((p, e) => checkPoint(p, `endpoints[${k}][${e}]`));
+  });
+  const continuity = options.continuity ?? 'tangency';
+  if (continuity !== 'tangency' && continuity !== 'position') throw new Error(`continuity: must be "tangency" or "position", not ${JSON.stringify(continuity)}`);
+  const all = endpoints.flat();
+  const size = Math.hypot(...[0, 1, 2].map((c) => Math.max(...all.map((p) => p[c])) - Math.min(...all.map((p) => p[c]))));
+  const tol = options.tolerance ?? 1e-3 * size;
+  endpoints.forEach(([p, q], k) => {
+    const closed = dist(p, q) <= tol;
+    if (borders.length === 1 && !closed) throw new Error(`borders[0]: ${borders[0].at} of ${JSON.stringify(borders[0].surface)} is not closed: one border must be a closed curve`);
+    if (borders.length > 1 && closed) throw new Error(`borders[${k}]: ${borders[k].at} of ${JSON.stringify(borders[k].surface)} is closed (its ends meet): fill it alone`);
+  });
+  const loop = borders.length === 1 ? [{ index: 0, forward: true }] : chainBorders(endpoints, tol);
+  const name = options.name ?? uniquePatchName(scene, 'fill');
+  checkNewPatchName(scene, name);
+  raiseVersion(scene);
+  const fill = { name, kind: 'fill', borders: loop.map(({ index, forward }) => ({ patch: borders[index].surface, at: borders[index].at, ...(forward ? {} : { reverse: true }) })) };
+  if (continuity !== 'tangency') fill.continuity = continuity;
+  scene.patches.push(fill);
   return name;
 }

@@ -21,7 +21,7 @@ const borderLabel = (b) => `${b.surface} · ${b.at}`;
 const asOptions = (labels) => Object.fromEntries(labels.map((l) => [escapeHtml(l), l]));
 
 /**
- * handlers: { onNew(), onAdd(kindId, options?), onBlend(a, b, options), onFill(borders[4]),
+ * handlers: { onNew(), onAdd(kindId, options?), onBlend(a, b, options), onFill(borders, { kind: 'bezier' | 'pde' }),
  *   onPickMode(kind: 'blend' | 'fill' | null) }; borders are { surface, at }.
  */
 export function buildBuildFolder(gui, handlers) {
@@ -52,7 +52,12 @@ export function buildBuildFolder(gui, handlers) {
   custom.close();
 
   const draft = { a: NONE, b: NONE, continuity: 'tangency', power: 1, pick: false };
-  const fillDraft = { b0: NONE, b1: NONE, b2: NONE, b3: NONE, pick: false };
+  // The fill's kind: a Bézier patch (four borders, seed 002) or a PDE fill (1 to 6 borders,
+  // G1 to each, a regular centre; docs/chains-and-fills.md).
+  const FILL_KINDS = { 'Bézier (4 borders)': 'bezier', 'PDE (1–6 borders)': 'pde' };
+  const SLOTS = ['b0', 'b1', 'b2', 'b3', 'b4', 'b5'];
+  const fillDraft = { kind: 'bezier', b0: NONE, b1: NONE, b2: NONE, b3: NONE, b4: NONE, b5: NONE, pick: false };
+  const slotsOf = () => (fillDraft.kind === 'pde' ? SLOTS : SLOTS.slice(0, 4));
   let choices = [NONE];
   let byLabel = new Map();
   let blend = null;
@@ -70,8 +75,9 @@ export function buildBuildFolder(gui, handlers) {
     blend.add(draft, 'power', 0.1, 4, 0.01).name('power');
     blend.add(draft, 'pick').name('pick in the view').onChange((on) => setPick(on ? 'blend' : null)).domElement.dataset.build = 'blend-pick';
     blend.add({ make: () => makeBlend() }, 'make').name('make the blend').domElement.dataset.build = 'blend-make';
-    fill = folder.addFolder('Fill a loop of four borders');
-    ['b0', 'b1', 'b2', 'b3'].forEach((k, i) => {
+    fill = folder.addFolder('Fill a loop of borders');
+    fill.add(fillDraft, 'kind', FILL_KINDS).name('fill').onChange(() => buildChoices()).domElement.dataset.build = 'fill-kind';
+    slotsOf().forEach((k, i) => {
       fill.add(fillDraft, k, asOptions(choices)).name(`border ${i + 1}`).domElement.dataset.build = `fill-${i}`;
     });
     fill.add(fillDraft, 'pick').name('pick in the view').onChange((on) => setPick(on ? 'fill' : null)).domElement.dataset.build = 'fill-pick';
@@ -104,9 +110,14 @@ export function buildBuildFolder(gui, handlers) {
   }
 
   function makeFill() {
-    const borders = ['b0', 'b1', 'b2', 'b3'].map((k) => chosen(fillDraft[k]));
+    if (fillDraft.kind === 'pde') {
+      const borders = SLOTS.map((k) => chosen(fillDraft[k])).filter(Boolean);
+      if (!borders.length) return say('choose the borders around the hole, 1 to 6 (or pick them in the view)', true);
+      return handlers.onFill(borders, { kind: 'pde' });
+    }
+    const borders = SLOTS.slice(0, 4).map((k) => chosen(fillDraft[k]));
     if (borders.some((b) => !b)) return say('choose the four borders around the hole (or pick them in the view)', true);
-    handlers.onFill(borders);
+    handlers.onFill(borders, { kind: 'bezier' });
   }
 
   function say(text, error = false) {
@@ -122,7 +133,7 @@ export function buildBuildFolder(gui, handlers) {
     setBorders(borders) {
       byLabel = new Map(borders.map((b) => [borderLabel(b), b]));
       choices = [NONE, ...byLabel.keys()];
-      for (const [obj, key] of [[draft, 'a'], [draft, 'b'], ...['b0', 'b1', 'b2', 'b3'].map((k) => [fillDraft, k])]) {
+      for (const [obj, key] of [[draft, 'a'], [draft, 'b'], ...SLOTS.map((k) => [fillDraft, k])]) {
         if (!byLabel.has(obj[key])) obj[key] = NONE;
       }
       buildChoices();
@@ -138,7 +149,7 @@ export function buildBuildFolder(gui, handlers) {
         refresh();
         return [chosen(draft.a), chosen(draft.b)].filter(Boolean);
       }
-      const keys = ['b0', 'b1', 'b2', 'b3'];
+      const keys = slotsOf();
       const free = keys.find((k) => fillDraft[k] === NONE);
       if (!free) {
         keys.forEach((k) => { fillDraft[k] = NONE; });
@@ -148,10 +159,12 @@ export function buildBuildFolder(gui, handlers) {
       return keys.map((k) => chosen(fillDraft[k])).filter(Boolean);
     },
     blendOptions: () => ({ continuity: draft.continuity, power: draft.power }),
+    /** The fill's kind and how many borders it takes before a pick makes it ('pde': 6, or the button). */
+    fillKind: () => fillDraft.kind,
     /** After a blend or a fill was made (or refused): the choices start again. */
     clearChoices() {
       draft.a = draft.b = NONE;
-      for (const k of ['b0', 'b1', 'b2', 'b3']) fillDraft[k] = NONE;
+      for (const k of SLOTS) fillDraft[k] = NONE;
       refresh();
     },
   };

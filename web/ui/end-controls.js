@@ -15,7 +15,7 @@ import { buildDerivedFields } from './derived-fields.js';
 import { buildTauHandles } from './tau-handles.js';
 import {
   ENDS, TRIMLINES, ISO_LINES, CONTINUITIES, SCALES,
-  readEnd, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField, detachRefusal,
+  readEnd, endOf, canHaveEnds, surfaceNames, curveFromIsoLine, endErrorField, detachRefusal,
 } from '../state/ends-edit.js';
 
 const TRIMLINE_LABELS = { t0: 't0 (iso-line)', t1: 't1 (iso-line)', curve: 'curve t = τ(v)' };
@@ -78,6 +78,12 @@ export function buildEndFolders(gui, scene, solved, handlers) {
   function fill(view) {
     clear(view);
     const { patch, end, folder } = view;
+    const raw = endOf(patch, end);
+    if (raw && typeof raw.patch === 'string') {
+      // Version 4, a chained end: its conditions come from the patch it continues, once solved.
+      view.extras.push(note(folder, `continues “${raw.patch}” ${String(raw.at)} (${raw.continuity === 'curvature' ? 'G2' : 'G1'}): derived from it when it is solved`));
+      return;
+    }
     const e = readEnd(patch, end);
     if (!e) {
       view.extras.push(note(folder, `typed in Functions “${patch.name}”`));

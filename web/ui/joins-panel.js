@@ -3,9 +3,9 @@
 // verdict), the crossings found, and a checkbox per join that highlights it on the
 // surface (failing joins start ticked). Built with createElement/textContent only:
 // patch and surface names from a scene or a link are shown literally.
-// DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<side>"] with
+// DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<side>:<met>:<edge>"] with
 // data-verdict="ok" | "fail", its checkbox input, .joins-crossing, .joins-message.
-import { joinFigures, crossingText, joinKey } from '../state/join-report.js';
+import { joinFigures, crossingText, joinKey, centreText } from '../state/join-report.js';
 
 function el(tag, className, text) {
   const node = document.createElement(tag);
@@ -35,7 +35,7 @@ export function buildJoinsFolder(gui, onToggle, onOpen) {
 
   function entry(j, on) {
     const li = el('li', `joins-item ${j.ok ? 'ok' : 'fail'}`);
-    li.dataset.join = `${j.patch}:${j.end}`;
+    li.dataset.join = `${j.patch}:${j.end}:${j.surface}:${j.edge}`;
     li.dataset.verdict = j.ok ? 'ok' : 'fail';
     const label = el('label', 'joins-head');
     const box = el('input');
@@ -84,6 +84,16 @@ export function buildJoinsFolder(gui, onToggle, onOpen) {
       const list = el('ul', 'joins-list');
       for (const j of report.joins) list.append(entry(j, ticked.has(joinKey(j))));
       body.append(list);
+      if (report.centres?.length) {
+        const cl = el('ul', 'joins-centres');
+        for (const c of report.centres) {
+          const li = el('li', `joins-centre ${c.ok ? 'ok' : 'fail'}`, centreText(c));
+          li.dataset.centre = c.patch;
+          li.dataset.verdict = c.ok ? 'ok' : 'fail';
+          cl.append(li);
+        }
+        body.append(cl);
+      }
       if (report.crossings.length) {
         const cl = el('ul', 'joins-crossings');
         for (const c of report.crossings) cl.append(el('li', 'joins-crossing', crossingText(c)));

@@ -22,7 +22,7 @@ const CHOSEN_WIDTH = 3;
 export const BORDERS = ['t0', 't1'];
 
 /** Blends (pde, bezier) have no borders to pick; every other kind is a primary surface. */
-export const isSurfaceKind = (kind) => kind !== 'pde' && kind !== 'bezier';
+export const isSurfaceKind = (kind) => kind !== 'pde' && kind !== 'bezier' && kind !== 'fill';
 
 /** The borders of one solved patch: [{ patch, border, points (flat xyz, v0 to v1) }]. */
 export function bordersOf(patch) {

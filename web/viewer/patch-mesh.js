@@ -82,7 +82,7 @@ function setCurvature(mesh, patch) {
 
 /** A mesh for one patch; userData keeps the name and kind for lookups and tests. */
 export function meshFromPatch(patch) {
-  const solved = patch.kind === 'pde' || patch.kind === 'bezier';
+  const solved = patch.kind === 'pde' || patch.kind === 'fill' || patch.kind === 'bezier';
   const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
   mesh.frustumCulled = false; // the view frames the patches; culling would compute bounds per solve
