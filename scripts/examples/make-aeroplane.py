@@ -16,8 +16,14 @@ The aeroplane's axis is x, nose at +x, z up, the left wing at -y.
   tipL/R  fills closing the wings' tip borders (height 0.3: a round tip)
   mid_top, mid_bottom   4-sided fills of the fuselage between x1 and x2, between front2.u1,
           the two rims and rear1.u0
-  rear1   pde: circle R at x2 (pure axial tangent) -> tapered section at x3
-  rear2   pde: continues rear1.u1 (tangency) -> small raised section at the tail tip
+  rear1   pde: circle R at x2 (pure axial tangent) -> tapered, raised circle at x3 (pure axial)
+  stabRootL/R  pde: the horizontal stabilisers' root blends, built like rootL/R from a lens in
+          the side plane y = -+ tail_r R of the tail section (x3 to x4) to the stabiliser's root
+  stabL/R surfaces: the horizontal stabilisers (tailplanes), smaller swept tapered surfaces
+  stabTipL/R  fills closing the stabilisers' tip borders (height 0.3)
+  tail_top, tail_bottom  4-sided fills of the fuselage between x3 and x4, between rear1.u1,
+          the two stabiliser rims and rear2.u0
+  rear2   pde: the same circle at x4 (pure axial tangent) -> small raised section at the tail tip
   tail    fill closing rear2.u1
 """
 import json
@@ -27,8 +33,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.normpath(os.path.join(HERE, "..", "..", "examples", "you2004-fig8d.json"))
 
 # Fuselage stations (fixed numbers; R and the sections are parameters).
-X_NOSE, XA, X1, X2, X3, X_TAIL = 5.2, 3.8, 2.2, -0.6, -4.2, -6.6
+# Between x1 and x2 the fuselage is a cylinder of radius R (the wing roots), between x3 and x4 one of
+# radius tail_r R raised by tail_lift R (the stabilisers' roots).
+X_NOSE, XA, X1, X2, X3, X4, X_TAIL = 5.2, 3.8, 2.2, -0.6, -4.0, -5.2, -6.6
 XM = (X1 + X2) / 2  # the lens centre
+XT = (X3 + X4) / 2  # the tail lens's centre
 RIM_DWELL = 0.05  # the rim's dwell at its rear tip (see below)
 
 
@@ -51,8 +60,19 @@ parameters = {
     "chord": param(0.9, 0.7, 1.0, "half chord at the root"),
     "taper": param(0.55, 0.2, 0.7, "taper: the tip's chord is (1 - taper) × the root's"),
     "thick": param(0.16, 0.1, 0.22, "half thickness of the wing at the root"),
-    "tail_r": param(0.7, 0.55, 0.85, "fuselage section radius at x3 (× R)"),
-    "tail_lift": param(0.25, 0.0, 0.4, "rise of the fuselage's centre line at x3 (× R)"),
+    "tail_r": param(0.6, 0.5, 0.75, "fuselage section radius between x3 and x4, at the stabilisers (× R)"),
+    "tail_lift": param(0.3, 0.0, 0.4, "rise of the fuselage's centre line between x3 and x4 (× R)"),
+    "stab_h": param(0.5, 0.4, 0.65, "half-height of the stabilisers' root rim (× the tail section's radius)"),
+    "stab_lam": param(0.6, 0.3, 1.0, "stabiliser rim: inward tangent (× distance to the rim's centre)"),
+    "stab_p": param(1.0, 0.5, 1.6, "power of the root blends at the stabilisers"),
+    "stab_x": param(0.0, -0.1, 0.1, "stabiliser position along the fuselage (moves the stabilisers; their root blends follow)"),
+    "stab_gap": param(0.35, 0.25, 0.5, "distance of the stabiliser root outside the fuselage side"),
+    "stab_span": param(1.8, 1.2, 2.4, "stabiliser span (each side, from the root)"),
+    "stab_sweep": param(0.6, 0.0, 1.0, "stabiliser sweep: how far back the tip's centre lies"),
+    "stab_dihedral": param(0.1, 0.0, 0.3, "stabiliser dihedral: how far up the tip lies"),
+    "stab_chord": param(0.4, 0.3, 0.45, "stabiliser half chord at the root"),
+    "stab_taper": param(0.5, 0.2, 0.6, "stabiliser taper: the tip's chord is (1 - stab_taper) × the root's"),
+    "stab_thick": param(0.07, 0.05, 0.1, "half thickness of the stabiliser at the root"),
     "tip_r": param(0.18, 0.1, 0.3, "tail tip section radius (× R)"),
     "tip_lift": param(0.55, 0.2, 0.8, "rise of the tail tip (× R)"),
 }
@@ -123,22 +143,25 @@ def ramp(c, side):
 
 
 PHI = f"{3.141592653589793 / C1!r}*(v - {ramp(C1, 'L')} + {ramp(C2, 'R')})"
-rim_x = f"{X1} + {(X2 - X1) / C1!r}*(v - {ramp(C1, 'L')} - {ramp(C2, 'R')})"
-rim_z = f"h*R*sin({PHI})"
-A = (X1 - X2) / 3.141592653589793  # |dx/dphi| along a branch
 RANGE_TOP = [0, C1]
 RANGE_BOTTOM = [C2, "2*pi"]
 
 
-def root_blend(name, side, wing):
-    y = "-R" if side < 0 else "R"
+def root_blend(name, side, surface, x_front, x_back, radius, zc, h, lam, power):
+    """A root blend from the lens in the plane y = -+radius between x_front and x_back (centre
+    height zc, half-height h × radius) to the surface's root border t = 0, by reference."""
+    rim_x = f"{x_front} + {(x_back - x_front) / C1!r}*(v - {ramp(C1, 'L')} - {ramp(C2, 'R')})"
+    half = f"{h}*{radius}"
+    rim_z = f"{zc} + {half}*sin({PHI})"
+    a = (x_front - x_back) / 3.141592653589793  # |dx/dphi| along a branch
+    y = f"-{radius}" if side < 0 else f"{radius}"
     pos = (rim_x, y, rim_z)
-    der = (f"-lam*h*R*cos({PHI})", "0", f"-lam*{A!r}*sin({PHI})")
+    der = (f"-{lam}*{half}*cos({PHI})", "0", f"-{lam}*{a!r}*sin({PHI})")
     b = typed(u0=(pos, der))
     for axis in "xyz":
         b[axis] = {"u0": b[axis]["u0"]}
     return pde(name, boundary=b,
-               ends={"u1": {"surface": wing, "at": "t0", "continuity": "tangency", "power": "rim_p"}},
+               ends={"u1": {"surface": surface, "at": "t0", "continuity": "tangency", "power": power}},
                method="modal:64")
 
 
@@ -155,8 +178,21 @@ def wing(name, side):
     }
 
 
-patches.append(root_blend("rootL", -1, "wingL"))
-patches.append(root_blend("rootR", +1, "wingR"))
+def stabiliser(name, side):
+    s = "-" if side < 0 else ""
+    half_chord = "stab_chord*(1 - stab_taper*t)"
+    half_thick = "stab_thick*(1 - stab_taper*t)"
+    return {
+        "name": name, "kind": "surface", "t_range": [0, 1], "v_range": [0, "2*pi"],
+        "x": f"{XT} - stab_sweep*t + {half_chord}*cos(v)",
+        "y": f"{s}(tail_r*R + stab_gap + stab_span*t)",
+        "z": f"tail_lift*R + stab_dihedral*t + {half_thick}*sin(v)*(0.8 + 0.35*cos(v))",
+        "placement": {"translate": ["stab_x", 0, 0]},
+    }
+
+
+patches.append(root_blend("rootL", -1, "wingL", X1, X2, "R", "0", "h", "lam", "rim_p"))
+patches.append(root_blend("rootR", +1, "wingR", X1, X2, "R", "0", "h", "lam", "rim_p"))
 patches.append(wing("wingL", -1))
 patches.append(wing("wingR", +1))
 # The tip section is thin (thickness/chord about 0.18): at the default height the cap's centre is
@@ -180,15 +216,41 @@ patches.append({"name": "mid_bottom", "kind": "fill", "height": 1.7, "borders": 
 ]})
 
 # --- rear fuselage ---------------------------------------------------------------------------
+# rear1 tapers and rises from the circle R at x2 to the circle tail_r R (centre raised by
+# tail_lift R) at x3, ending with a purely axial tangent; rear2 starts at the same circle at x4.
 L3 = X2 - X3
-L4 = X3 - X_TAIL
+L4 = X4 - X_TAIL
+TAIL_SECTION = ("tail_r*R", "tail_lift*R")
 patches.append(pde("rear1", boundary=typed(
     u0=(circle_section(X2, "R"), (f"{-L3}", "0", "0")),
-    u1=(circle_section(X3, "tail_r*R", "tail_lift*R"), (f"{-L3}", "-0.12*R*cos(v)", "0.12*R*(1 - sin(v))")))))
-patches.append(pde("rear2",
-                   ends={"u0": {"patch": "rear1", "at": "u1", "continuity": "tangency", "power": 1}},
-                   boundary=typed(u1=(circle_section(X_TAIL, "tip_r*R", "tip_lift*R"),
-                                      (f"{-L4 * 0.5}", "-0.3*R*cos(v)", "-0.3*R*sin(v)")))))
+    u1=(circle_section(X3, *TAIL_SECTION), (f"{-L3}", "0", "0")))))
+
+# --- the stabilisers: the same construction as the wings, on the tail section x3..x4 -------
+STAB_RIM = (X3, X4, "tail_r*R", "tail_lift*R", "stab_h", "stab_lam", "stab_p")
+patches.append(root_blend("stabRootL", -1, "stabL", *STAB_RIM))
+patches.append(root_blend("stabRootR", +1, "stabR", *STAB_RIM))
+patches.append(stabiliser("stabL", -1))
+patches.append(stabiliser("stabR", +1))
+patches.append({"name": "stabTipL", "kind": "fill", "borders": [{"patch": "stabL", "at": "t1"}], "height": 0.3})
+patches.append({"name": "stabTipR", "kind": "fill", "borders": [{"patch": "stabR", "at": "t1"}], "height": 0.3})
+patches.append({"name": "tail_top", "kind": "fill", "height": 1.7, "borders": [
+    {"patch": "rear1", "at": "u1", "range": [0, PI]},
+    {"patch": "stabRootL", "at": "u0", "range": RANGE_TOP},
+    {"patch": "rear2", "at": "u0", "range": [0, PI], "reverse": True},
+    {"patch": "stabRootR", "at": "u0", "range": RANGE_TOP, "reverse": True},
+]})
+patches.append({"name": "tail_bottom", "kind": "fill", "height": 1.7, "borders": [
+    {"patch": "rear1", "at": "u1", "range": [PI, "2*pi"]},
+    {"patch": "stabRootR", "at": "u0", "range": RANGE_BOTTOM, "reverse": True},
+    {"patch": "rear2", "at": "u0", "range": [PI, "2*pi"], "reverse": True},
+    {"patch": "stabRootL", "at": "u0", "range": RANGE_BOTTOM},
+]})
+
+# rear2's end is the tail tip as before the tail was added (axial pull 1.2): the cap 'tail' is unchanged.
+TIP_PULL = 1.2
+patches.append(pde("rear2", boundary=typed(
+    u0=(circle_section(X4, *TAIL_SECTION), (f"{-L4}", "0", "0")),
+    u1=(circle_section(X_TAIL, "tip_r*R", "tip_lift*R"), (f"{-TIP_PULL}", "-0.3*R*cos(v)", "-0.3*R*sin(v)")))))
 patches.append({"name": "tail", "kind": "fill", "borders": [{"patch": "rear2", "at": "u1"}]})
 
 scene = {
@@ -203,23 +265,24 @@ scene = {
 }
 
 scene["description"] = (
-    "Seed 000 Fig. 8d: an aeroplane produced by dividing it into patches and assembling them. "
-    "The axis is x (nose at +x), z is up. "
-    "Fuselage: 'front1' (fourth-order PDE) runs from a small nose section to a circle of radius R; "
-    "'front2' continues its end u1 (a chained end: the same position and cross derivative, so the join is G1) "
-    "to a circle of radius R at x1 whose tangent is purely axial; 'nose' is a fill closing front1's u0 with a "
-    "regular centre point (G1 to front1). 'rear1' starts at a circle of radius R at x2, again with a purely axial "
-    "tangent, and tapers and rises towards the tail; 'rear2' continues it (chained, G1) to a small tail section "
-    "closed by the fill 'tail' (G1). "
-    "Wing roots: 'rootL' and 'rootR' are fourth-order PDE blends from a lens-shaped rim in the fuselage's side "
-    "plane y = -R / y = +R (x running from x1 to x2 and back, z = h R sin phi, pointed at both tips), leaving it "
-    "inside that plane into the lens (lam), to the root border t = 0 of the wing surfaces 'wingL' and 'wingR' by reference "
-    "(tangency: G1 to the wing, re-derived when a wing moves: wing_x, sweep, dihedral, gap, chord, thick). "
-    "The wings are tapered, swept surfaces with an airfoil-like closed section; 'tipL' and 'tipR' are fills "
-    "closing their tip borders (G1; their centres are lifted by 0.3 of the border's rise, a round tip). "
-    "The fuselage between x1 and x2 is two four-sided fills, 'mid_top' and 'mid_bottom': each runs over half of "
-    "front2's end circle, half of each rim and half of rear1's start circle, G1 to all four (front2 and rear1 "
-    "end there with a purely axial tangent, so at the rims' tips the four tangent planes agree). "
+    "Seed 000 Fig. 8d: an aeroplane assembled from 22 patches. Axis x (nose at +x), z up. "
+    "Fuselage (10): 'front1' (fourth-order PDE) runs from a small nose section to a circle of radius R; 'front2' "
+    "continues its end u1 (chained: G1) to a circle R at x1 with a purely axial tangent; 'nose' is a fill closing "
+    "front1 (G1). 'rear1' runs from a circle R at x2 (purely axial) to a smaller raised circle (tail_r, tail_lift) "
+    "at x3 (purely axial); 'rear2' runs from that circle at x4 (purely axial) to a small tail section closed by "
+    "the fill 'tail'. "
+    "Wings (6): 'rootL'/'rootR' are fourth-order PDE blends from a lens-shaped rim in the side plane y = -R / +R "
+    "(x from x1 to x2 and back, z = h R sin phi, pointed tips), leaving it inside that plane (lam), to the root "
+    "border t = 0 of the surfaces 'wingL'/'wingR' by reference (tangency, re-derived when a wing moves: wing_x, "
+    "sweep, dihedral, gap, chord, thick): tapered, swept, airfoil-like; the fills 'tipL'/'tipR' close their tips "
+    "(height 0.3: round). Between x1 and x2 the fuselage is two four-sided fills, 'mid_top'/'mid_bottom', each over "
+    "half of front2's end circle, half of each rim and half of rear1's start circle, G1 to all four (the axial "
+    "tangents make the four tangent planes agree at the rims' tips). "
+    "Tail (6): the horizontal stabilisers are built the same way on the section x3..x4: 'stabRootL'/'stabRootR' "
+    "blend from a lens in the plane y = -+tail_r R (half-height stab_h, stab_lam) to the root of the stabiliser "
+    "surfaces 'stabL'/'stabR' by reference (stab_x moves them; stab_sweep, stab_dihedral, stab_gap, stab_chord, "
+    "stab_thick), closed by 'stabTipL'/'stabTipR' (height 0.3); 'tail_top'/'tail_bottom' are the four-sided fills "
+    "between rear1's end circle, the two rims and rear2's start circle. "
     "Every join is certified G1 by pdesurf check. pdesurf's construction: the paper gives no data for this figure."
 )
 

@@ -34,12 +34,12 @@ describe('models of many patches', { skip }, () => {
     const joins = await openFolder(page, 'joins');
     await page.waitForFunction(() => window.__pdesurf.analysis().report?.centres?.length > 0);
     const r = await report(page);
-    assert.equal(r.joins.length, 16);
+    assert.equal(r.joins.length, 27);
     assert.ok(r.joins.every((j) => j.ok), JSON.stringify(r.joins.filter((j) => !j.ok)));
-    assert.equal(r.centres.length, 6);
+    assert.equal(r.centres.length, 10);
     assert.ok(r.centres.every((c) => c.ok));
-    assert.equal(await joins.locator('[data-join][data-verdict="ok"]').count(), 16);
-    assert.equal(await joins.locator('[data-centre][data-verdict="ok"]').count(), 6);
+    assert.equal(await joins.locator('[data-join][data-verdict="ok"]').count(), 27);
+    assert.equal(await joins.locator('[data-centre][data-verdict="ok"]').count(), 10);
     assert.match(await joins.locator('[data-centre="mid_top"]').textContent(), /^“mid_top” centre: normal spread .*: regular$/);
     // The outliner: what each patch is derived from.
     assert.equal(await page.locator('#panel [data-patch="front2"] .outliner-deps').textContent(), '← front1');
