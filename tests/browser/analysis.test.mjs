@@ -297,7 +297,7 @@ for (const size of SIZES) {
       await frame();
       const after = await state();
       const j = s.report.joins[pick];
-      assert.ok(after.highlights.includes(`${j.patch}\u0000${j.end}`), `highlights: ${after.highlights}`);
+      assert.ok(after.highlights.includes(`${j.patch}\u0000${j.end}\u0000${j.surface}\u0000${j.edge}`), `highlights: ${after.highlights}`);
       await folder.evaluate((el) => el.scrollIntoView({ block: 'start' })); // the panel shows the joins list
       await frame();
       const { img, rect } = await viewShot(`analysis-joins-${size.name}.png`);
@@ -307,7 +307,7 @@ for (const size of SIZES) {
       await openFolder('joins'); // at phone size the sheet was closed for the screenshot
       await box.uncheck();
       await frame();
-      assert.ok(!(await state()).highlights.includes(`${j.patch}\u0000${j.end}`), 'unticking kept the highlight');
+      assert.ok(!(await state()).highlights.includes(`${j.patch}\u0000${j.end}\u0000${j.surface}\u0000${j.edge}`), 'unticking kept the highlight');
     });
 
     it('logged no console error, page error or failed request', () => {
