@@ -1,7 +1,8 @@
 // Writes the seed inputs of one fuzz target into a directory, one file each (docs/testing.md):
 //   node tests/fuzz/seeds.mjs scene|link OUTDIR
-// scene: examples/*.json, tests/fixtures/v1/*.json (version-1 scenes) and every file under
-//        tests/hostile/scenes/.
+// scene: examples/*.json (but the two models of many patches, seconds each under the fuzz
+//        build's sanitizers: tests/fixtures/models/ has small ones instead),
+//        tests/fixtures/v1/*.json (version-1 scenes) and every file under tests/hostile/scenes/.
 // link:  every link of tests/links/links.json, every file under tests/hostile/links/ as it is
 //        (and, when it is a links.json-style fixture file, each of its links), and a
 //        version-1 link of each example (so mutations start from links that open).
@@ -37,7 +38,9 @@ const examples = readdirSync(join(root, 'examples'))
   .map((f) => join(root, 'examples', f));
 
 if (target === 'scene') {
-  for (const f of examples) write(basename(f), readFileSync(f));
+  const heavy = new Set(['you2004-fig8c.json', 'you2004-fig8d.json']);
+  for (const f of examples) if (!heavy.has(basename(f))) write(basename(f), readFileSync(f));
+  for (const f of filesUnder(join(root, 'tests/fixtures/models'))) write(`models-${basename(f)}`, readFileSync(f));
   for (const f of filesUnder(join(root, 'tests/fixtures/v1'))) write(`v1-${basename(f)}`, readFileSync(f));
   for (const f of filesUnder(join(root, 'tests/hostile/scenes'))) write(`hostile-${relative(root, f)}`, readFileSync(f));
 } else {

@@ -21,6 +21,9 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
   for (const auto& entry : index["examples"]) {
     const std::string id = entry["id"];
     CAPTURE(id);
+    // The aeroplane (22 patches) takes 2 s in release and over 20 s under AddressSanitizer,
+    // where fig8c (three fills) and tests/native/chains_test.cpp cover the same code.
+    if (testing::kTimeScale > 1 && id == "you2004-fig8d") continue;
     const std::string text = readText(examplePath(entry["file"]));
     REQUIRE(nlohmann::json::parse(text)["id"] == id);
     const Scene scene = parseScene(text);
@@ -76,6 +79,7 @@ TEST_CASE("examples: every example passes pdesurf check, except exactly what its
   for (const auto& entry : index["examples"]) {
     const std::string id = entry["id"];
     CAPTURE(id);
+    if (testing::kTimeScale > 1 && id == "you2004-fig8d") continue;  // as above: fig8c and the chains test cover it there
     const Scene scene = parseScene(readText(examplePath(entry["file"])));
     const SceneReport r = checkScene(scene, solveScene(scene), 64);
     const auto knownJoins = entry.value("known_failing_joins", nlohmann::json::array());
