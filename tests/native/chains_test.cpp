@@ -51,13 +51,6 @@ json chainScene(double r0, double r1, double r2, double tilt, double power, cons
   return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", {b, a}}};  // b first: the order is the graph's
 }
 
-const SolvedPatch& named(const std::vector<SolvedPatch>& s, const std::string& n) {
-  for (const SolvedPatch& p : s)
-    if (p.patch->name == n) return p;
-  FAIL("no patch " << n);
-  return s.front();
-}
-
 }  // namespace
 
 TEST_CASE("a chained end continues the patch it names exactly, G1 and G2, over random tubes") {
@@ -75,7 +68,7 @@ TEST_CASE("a chained end continues the patch it names exactly, G1 and G2, over r
     REQUIRE(report.joins.size() == 1);
     CHECK(report.joins[0].level == (continuity == "curvature" ? 2 : 1));
     CHECK(report.joins[0].ok);
-    const SeparableSurface &A = named(solved, "a").surface, &B = named(solved, "b").surface;
+    const SeparableSurface &A = solvedNamed(solved, "a").surface, &B = solvedNamed(solved, "b").surface;
     for (double v = 0; v < 6.28; v += 0.37) {
       CHECK((evalPoint(B, 0, v) - evalPoint(A, 1, v)).norm() < 1e-12);
       CHECK((evalPoint(B, 0, v, 1) - p * evalPoint(A, 1, v, 1)).norm() < 1e-11);
@@ -146,21 +139,21 @@ TEST_CASE("a cache re-solves only the patches downstream of an edit") {
   SolveCache cache;
   const Scene s0 = parseScene(chainScene(1, 1.2, 1.1, 0.1, 1, "tangency", 4).dump());
   const auto first = solveScene(s0, &cache);
-  CHECK(!named(first, "a").reused);
+  CHECK(!solvedNamed(first, "a").reused);
   const auto again = solveScene(s0, &cache);
-  CHECK(named(again, "a").reused);
-  CHECK(named(again, "b").reused);
+  CHECK(solvedNamed(again, "a").reused);
+  CHECK(solvedNamed(again, "b").reused);
   // b's far end only: a is reused, b is solved again.
   const Scene s1 = parseScene(chainScene(1, 1.2, 1.3, 0.1, 1, "tangency", 4).dump());
   const auto edited = solveScene(s1, &cache);
-  CHECK(named(edited, "a").reused);
-  CHECK(!named(edited, "b").reused);
+  CHECK(solvedNamed(edited, "a").reused);
+  CHECK(!solvedNamed(edited, "b").reused);
   // a's far end: both again (b continues it).
   const Scene s2 = parseScene(chainScene(1, 1.25, 1.3, 0.1, 1, "tangency", 4).dump());
   const auto upstream = solveScene(s2, &cache);
-  CHECK(!named(upstream, "a").reused);
-  CHECK(!named(upstream, "b").reused);
+  CHECK(!solvedNamed(upstream, "a").reused);
+  CHECK(!solvedNamed(upstream, "b").reused);
   // The reused surfaces are the ones solved: the same figures as without the cache.
   const auto fresh = solveScene(s2);
-  CHECK((evalPoint(named(upstream, "b").surface, 0.4, 1.1) - evalPoint(named(fresh, "b").surface, 0.4, 1.1)).norm() == 0);
+  CHECK((evalPoint(solvedNamed(upstream, "b").surface, 0.4, 1.1) - evalPoint(solvedNamed(fresh, "b").surface, 0.4, 1.1)).norm() == 0);
 }

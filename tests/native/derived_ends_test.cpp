@@ -37,12 +37,6 @@ json byReference(json scene, const json& ends) {
   return scene;
 }
 
-const SolvedPatch& solvedNamed(const std::vector<SolvedPatch>& s, const std::string& name) {
-  for (const SolvedPatch& p : s)
-    if (p.patch->name == name) return p;
-  throw std::runtime_error("no patch " + name);
-}
-
 // Largest difference between the two scenes' blends over a 41×41 grid, relative to the size.
 double blendDifference(const json& a, const json& b) {
   const Scene sa = parseScene(a.dump()), sb = parseScene(b.dump());

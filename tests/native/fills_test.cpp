@@ -45,13 +45,6 @@ json polygonScene(int n, double a, double b, double c, double turn) {
   return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}};
 }
 
-const SolvedPatch& named(const std::vector<SolvedPatch>& s, const std::string& n) {
-  for (const SolvedPatch& p : s)
-    if (p.patch->name == n) return p;
-  FAIL("no patch " << n);
-  return s.front();
-}
-
 }  // namespace
 
 TEST_CASE("a fill closes N-sided holes G1 with a regular centre, N = 3..6, random curved surroundings") {
@@ -97,7 +90,7 @@ TEST_CASE("a fill closes N-sided holes G1 with a regular centre, N = 3..6, rando
 TEST_CASE("a flat hole gets a flat fill inside it; a closed border gets a cap") {
   const Scene flat = parseScene(polygonScene(5, 0, 0, 0, 0.3).dump());
   const auto solved = solveScene(flat);
-  const SeparableSurface& f = named(solved, "fill").surface;
+  const SeparableSurface& f = solvedNamed(solved, "fill").surface;
   for (double u = 0; u <= 1.0; u += 0.125)
     for (double v = 0; v < 2 * M_PI; v += 0.2) {
       const Eigen::Vector3d x = evalPoint(f, u, v);

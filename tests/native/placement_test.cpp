@@ -35,12 +35,6 @@ json& patchNamed(json& scene, const std::string& name) {
   throw std::runtime_error("no patch " + name);
 }
 
-const SolvedPatch& solvedNamed(const std::vector<SolvedPatch>& s, const std::string& name) {
-  for (const SolvedPatch& p : s)
-    if (p.patch->name == name) return p;
-  throw std::runtime_error("no patch " + name);
-}
-
 struct Motion {
   Eigen::Vector3d t;
   Eigen::Vector3d deg;

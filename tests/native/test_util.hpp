@@ -2,7 +2,9 @@
 #pragma once
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -28,6 +30,13 @@ constexpr double kTimeScale = 1.0;
 #else
 constexpr double kTimeScale = 1.0;
 #endif
+
+// The solved patch of that name (a test's own scene: a missing name is the test's bug).
+inline const SolvedPatch& solvedNamed(const std::vector<SolvedPatch>& s, const std::string& name) {
+  for (const SolvedPatch& p : s)
+    if (p.patch->name == name) return p;
+  throw std::runtime_error("no patch " + name);
+}
 
 // "<ErrorCode>: <message>" of the error parseScene(text) throws, or "" when it reads.
 inline std::string parseErrorOf(const std::string& text) {

@@ -123,6 +123,27 @@ function checkPoint(p, path) {
   if (!Array.isArray(p) || p.length !== 3 || !p.every(Number.isFinite)) throw new Error(`${path}: expected a point [x, y, z] of finite numbers`);
 }
 
+/** Picked borders of a fill: surfaces' t0/t1, each once, each with its two drawn ends. */
+function checkPicks(scene, borders, endpoints) {
+  const seen = new Set();
+  borders.forEach((b, k) => {
+    if (!isObject(b)) throw new Error(`borders[${k}]: expected { surface, at }`);
+    surfaceOf(scene, b.surface, `borders[${k}]`);
+    if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
+    const key = JSON.stringify([b.surface, b.at]);
+    if (seen.has(key)) throw new Error(`borders[${k}]: ${b.at} of ${JSON.stringify(b.surface)} is picked twice`);
+    seen.add(key);
+    if (!Array.isArray(endpoints[k]) || endpoints[k].length !== 2) throw new Error(`endpoints[${k}]: expected [start, end]`);
+    endpoints[k].forEach((p, e) => checkPoint(p, `endpoints[${k}][${e}]`));
+  });
+}
+
+/** The diagonal of the picked borders' ends' bounding box (the loop's size, for tolerances). */
+function loopSize(endpoints) {
+  const all = endpoints.flat();
+  return Math.hypot(...[0, 1, 2].map((c) => Math.max(...all.map((p) => p[c])) - Math.min(...all.map((p) => p[c]))));
+}
+
 /**
  * Which way round four borders go: borders[k]'s drawn ends are endpoints[k] = [start, end]
  * (at the surface's v0 and v1). Returns [{ index, forward }] in loop order, starting with
@@ -165,26 +186,14 @@ export function chainBorders(endpoints, tol) {
 export function addFill(scene, borders, endpoints, options = {}) {
   if (!Array.isArray(borders) || borders.length !== 4) throw new Error('borders: expected four borders');
   if (!Array.isArray(endpoints) || endpoints.length !== 4) throw new Error('endpoints: expected the two ends of each of the four borders');
-  const seen = new Set();
-  borders.forEach((b, k) => {
-    if (!isObject(b)) throw new Error(`borders[${k}]: expected { surface, at }`);
-    surfaceOf(scene, b.surface, `borders[${k}]`);
-    if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
-    const key = JSON.stringify([b.surface, b.at]);
-    if (seen.has(key)) throw new Error(`borders[${k}]: ${b.at} of ${JSON.stringify(b.surface)} is picked twice`);
-    seen.add(key);
-    if (!Array.isArray(endpoints[k]) || endpoints[k].length !== 2) throw new Error(`endpoints[${k}]: expected [start, end]`);
-    endpoints[k].forEach((p, e) => checkPoint(p, `endpoints[${k}][${e}]`));
-  });
+  checkPicks(scene, borders, endpoints);
   const energy = options.energy ?? 'thin-plate';
   if (energy !== 'thin-plate' && energy !== 'membrane') throw new Error(`energy: must be "thin-plate" or "membrane", not ${JSON.stringify(energy)}`);
   const degree = options.degree ?? [7, 7];
   if (!Array.isArray(degree) || degree.length !== 2 || !degree.every((d) => Number.isInteger(d) && d >= 1 && d <= 16)) {
     throw new Error(`degree: expected [n, m], integers from 1 to 16, not ${JSON.stringify(degree)}`);
   }
-  const all = endpoints.flat();
-  const size = Math.hypot(...[0, 1, 2].map((c) => Math.max(...all.map((p) => p[c])) - Math.min(...all.map((p) => p[c]))));
-  const tol = options.tolerance ?? 1e-3 * size;
+  const tol = options.tolerance ?? 1e-3 * loopSize(endpoints);
   endpoints.forEach(([p, q], k) => {
     if (dist(p, q) <= tol) throw new Error(`borders[${k}]: ${borders[k].at} of ${JSON.stringify(borders[k].surface)} is closed (its ends meet); a fill needs four open borders`);
   });
@@ -216,22 +225,10 @@ export function addFill(scene, borders, endpoints, options = {}) {
 export function addLoopFill(scene, borders, endpoints, options = {}) {
   if (!Array.isArray(borders) || borders.length < 1 || borders.length > 6) throw new Error('borders: expected 1 to 6 borders');
   if (!Array.isArray(endpoints) || endpoints.length !== borders.length) throw new Error('endpoints: expected the two ends of each border');
-  const seen = new Set();
-  borders.forEach((b, k) => {
-    if (!isObject(b)) throw new Error(`borders[${k}]: expected { surface, at }`);
-    surfaceOf(scene, b.surface, `borders[${k}]`);
-    if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
-    const key = JSON.stringify([b.surface, b.at]);
-    if (seen.has(key)) throw new Error(`borders[${k}]: ${b.at} of ${JSON.stringify(b.surface)} is picked twice`);
-    seen.add(key);
-    if (!Array.isArray(endpoints[k]) || endpoints[k].length !== 2) throw new Error(`endpoints[${k}]: expected [start, end]`);
-    endpoints[k].forEach((p, e) => checkPoint(p, `endpoints[${k}][${e}]`));
-  });
+  checkPicks(scene, borders, endpoints);
   const continuity = options.continuity ?? 'tangency';
   if (continuity !== 'tangency' && continuity !== 'position') throw new Error(`continuity: must be "tangency" or "position", not ${JSON.stringify(continuity)}`);
-  const all = endpoints.flat();
-  const size = Math.hypot(...[0, 1, 2].map((c) => Math.max(...all.map((p) => p[c])) - Math.min(...all.map((p) => p[c]))));
-  const tol = options.tolerance ?? 1e-3 * size;
+  const tol = options.tolerance ?? 1e-3 * loopSize(endpoints);
   endpoints.forEach(([p, q], k) => {
     const closed = dist(p, q) <= tol;
     if (borders.length === 1 && !closed) throw new Error(`borders[0]: ${borders[0].at} of ${JSON.stringify(borders[0].surface)} is not closed: one border must be a closed curve`);
