@@ -16,12 +16,16 @@ double GeneralFunction::eval(double v, int k) const {
   // Past the second derivative (normals and curvature need no more) Taylor arithmetic: its
   // cost grows with k², where each symbolic order multiplies the expression.
   if (k > 2) return derivativeAt(*derivs_.front(), ExprVar::V, vars, k);
+  return evaluate(*derivativeExpr(k), vars);
+}
+
+const Expr& GeneralFunction::derivativeExpr(int k) const {
   while (static_cast<int>(derivs_.size()) <= k) {
     const std::string what = "'" + clipText(text_, 200) + "': its derivative of order " + std::to_string(derivs_.size()) + " would";
     ExprBudget budget(kMaxDerivativeNodes, what);  // stops the build at the first node over it
     derivs_.push_back(derivative(derivs_.back(), ExprVar::V));
   }
-  return evaluate(*derivs_[k], vars);
+  return derivs_[k];
 }
 
 }  // namespace pdesurf

@@ -22,6 +22,9 @@ class GeneralFunction {
   VFunction origin;
   // d^k g / dv^k at v; NaN or inf where the expression is not finite (callers check).
   double eval(double v, int k) const;
+  // d^k g / dv^k as an expression, built on first use under the derivative budget (throws
+  // Error(TooLarge) when one order would exceed it).
+  const Expr& derivativeExpr(int k) const;
 
  private:
   std::string text_;

@@ -14,8 +14,9 @@ int findSpan(const std::vector<double>& knots, int degree, int count, double t) 
 }
 
 void basisDerivatives(const std::vector<double>& knots, int p, int span, double t, int n, double* ders) {
-  // The NURBS Book A2.3 with fixed small arrays (degree <= 15).
-  double ndu[16][16], a[2][16], left[16], right[16];
+  // The NURBS Book A2.3 with fixed small arrays (degree <= kMaxBSplineDegree).
+  constexpr int N = kMaxBSplineDegree + 1;
+  double ndu[N][N], a[2][N], left[N], right[N];
   ndu[0][0] = 1.0;
   for (int j = 1; j <= p; ++j) {
     left[j] = t - knots[span + 1 - j];
@@ -66,7 +67,7 @@ void basisDerivatives(const std::vector<double>& knots, int p, int span, double 
 Eigen::Vector3d evaluate(const BSplineSurface& s, double u, double v, int du, int dv) {
   const int p = s.degreeU, q = s.degreeV;
   if (du > p || dv > q) return Eigen::Vector3d::Zero();
-  double nu[16 * 16], nv[16 * 16];
+  double nu[(kMaxBSplineDegree + 1) * (kMaxBSplineDegree + 1)], nv[(kMaxBSplineDegree + 1) * (kMaxBSplineDegree + 1)];
   const int su = findSpan(s.knotsU, p, s.countU, u), sv = findSpan(s.knotsV, q, s.countV, v);
   basisDerivatives(s.knotsU, p, su, u, du, nu);
   basisDerivatives(s.knotsV, q, sv, v, dv, nv);
@@ -84,7 +85,7 @@ bool wellFormed(const BSplineSurface& s, std::string* why) {
     if (why) *why = m;
     return false;
   };
-  if (s.degreeU < 1 || s.degreeU > 15 || s.degreeV < 1 || s.degreeV > 15) return fail("degree outside 1..15");
+  if (s.degreeU < 1 || s.degreeU > kMaxBSplineDegree || s.degreeV < 1 || s.degreeV > kMaxBSplineDegree) return fail("degree outside 1..16");
   if (s.countU <= s.degreeU || s.countV <= s.degreeV) return fail("fewer poles than degree + 1");
   if (s.knotsU.size() != size_t(s.countU + s.degreeU + 1) || s.knotsV.size() != size_t(s.countV + s.degreeV + 1))
     return fail("knot vector sizes do not match the pole counts");

@@ -10,6 +10,9 @@
 
 namespace pdesurf {
 
+// Bézier patches go out as they are, up to degree 16.
+constexpr int kMaxBSplineDegree = 16;
+
 struct BSplineSurface {
   std::string name;
   int degreeU = 3, degreeV = 3;

@@ -1,0 +1,361 @@
+#include "cad/bspline_fit.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "cad/creases.hpp"
+#include "cad/derivative_bounds.hpp"
+#include "cad/fit_certificate.hpp"
+#include "cad/knots.hpp"
+#include "common/errors.hpp"
+#include "expr/program.hpp"
+
+namespace pdesurf {
+namespace {
+
+// Grid values: each span cut into its own number of cells; uSpan[i] names the cell's span.
+void makeGrid(const std::vector<double>& breaks, const std::vector<int>& cuts, std::vector<double>* t, std::vector<int>* spanOf) {
+  t->clear();
+  spanOf->clear();
+  for (size_t s = 0; s + 1 < breaks.size(); ++s)
+    for (int k = 0; k < cuts[s]; ++k) {
+      t->push_back(breaks[s] + (breaks[s + 1] - breaks[s]) * k / cuts[s]);
+      spanOf->push_back(int(s));
+    }
+  t->push_back(breaks.back());
+}
+
+// S's partials on the grid: per component, Σ_t G_t^{(a)}(u_i) g_t^{(b)}(v_j) as one matrix product.
+GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v) {
+  const Eigen::Index mu = Eigen::Index(u.size()), mv = Eigen::Index(v.size());
+  GridPartials out;
+  static const char* axis[3] = {"x", "y", "z"};
+  for (int c = 0; c < 3; ++c) {
+    const auto& terms = s.component[size_t(c)];
+    const Eigen::Index T = Eigen::Index(terms.size());
+    std::array<Eigen::MatrixXd, 3> G, g;
+    for (auto& m : G) m.resize(mu, T);
+    for (auto& m : g) m.resize(mv, T);
+    std::vector<double> tab(size_t(mu) * 3);
+    for (Eigen::Index t = 0; t < T; ++t) {
+      terms[size_t(t)].G.tabulate(u.data(), int(mu), 2, tab.data());
+      for (int a = 0; a < 3; ++a)
+        for (Eigen::Index i = 0; i < mu; ++i) G[size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
+      for (Eigen::Index j = 0; j < mv; ++j)
+        for (int b = 0; b < 3; ++b) g[size_t(b)](j, t) = terms[size_t(t)].g.eval(v[size_t(j)], b);
+    }
+    for (int k = 0; k < 5; ++k) {
+      Eigen::MatrixXd& m = out[size_t(k)][size_t(c)];
+      m = T ? Eigen::MatrixXd(G[size_t(kFitPartials[k][0])] * g[size_t(kFitPartials[k][1])].transpose())
+            : Eigen::MatrixXd::Zero(mu, mv);
+    }
+    if (const Expr& p = s.pointwise[size_t(c)]) {
+      // X, X_u, X_v, X_uu, X_uv, X_vv: one program, run along each grid row.
+      const std::vector<Expr> partials = partialDerivatives(p, true);
+      const ExprProgram program(partials);
+      static const int slot[5] = {0, 1, 2, 3, 5};
+      std::vector<std::vector<double>> rows(6, std::vector<double>(size_t(mv)));
+      std::vector<double> uRow(static_cast<size_t>(mv));
+      double* outs[6];
+      for (int r = 0; r < 6; ++r) outs[r] = rows[size_t(r)].data();
+      for (Eigen::Index i = 0; i < mu; ++i) {
+        std::fill(uRow.begin(), uRow.end(), u[size_t(i)]);
+        program.runAll(v.data(), uRow.data(), size_t(mv), outs);
+        for (int k = 0; k < 5; ++k)
+          for (Eigen::Index j = 0; j < mv; ++j) out[size_t(k)][size_t(c)](i, j) += rows[size_t(slot[k])][size_t(j)];
+      }
+    }
+    if (!out[0][size_t(c)].allFinite() || !out[3][size_t(c)].allFinite() || !out[4][size_t(c)].allFinite())
+      throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + " is not finite on the fit's grid");
+  }
+  return out;
+}
+
+GridPartials tabulateSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v) {
+  std::array<Eigen::SparseMatrix<double>, 3> nu, nv;
+  for (int d = 0; d < 3; ++d) {
+    nu[size_t(d)] = collocation(b.knotsU, b.degreeU, u, d);
+    nv[size_t(d)] = collocation(b.knotsV, b.degreeV, v, d);
+  }
+  GridPartials out;
+  for (int c = 0; c < 3; ++c) {
+    Eigen::MatrixXd net(b.countU, b.countV);
+    for (int i = 0; i < b.countU; ++i)
+      for (int j = 0; j < b.countV; ++j) net(i, j) = b.pole(i, j)[c];
+    for (int k = 0; k < 5; ++k)
+      out[size_t(k)][size_t(c)] = (nu[size_t(kFitPartials[k][0])] * net) * Eigen::SparseMatrix<double>(nv[size_t(kFitPartials[k][1])].transpose());
+  }
+  return out;
+}
+
+// Halves the spans marked, carrying their cell counts and which breaks are creases.
+void split(std::vector<double>& breaks, std::vector<int>& cuts, std::vector<bool>& crease, const std::vector<bool>& mark) {
+  std::vector<double> b{breaks.front()};
+  std::vector<int> c;
+  std::vector<bool> k{crease.front()};
+  for (size_t s = 0; s + 1 < breaks.size(); ++s) {
+    if (mark[s]) {
+      b.push_back(0.5 * (breaks[s] + breaks[s + 1]));
+      c.push_back(cuts[s]);
+      k.push_back(false);
+    }
+    b.push_back(breaks[s + 1]);
+    c.push_back(cuts[s]);
+    k.push_back(crease[s + 1]);
+  }
+  breaks.swap(b);
+  cuts.swap(c);
+  crease.swap(k);
+}
+
+// Uniform breaks with the creases put in (a uniform break within a tenth of a span of a
+// crease gives way to it).
+void withCreases(std::vector<double>& breaks, std::vector<bool>& crease, const std::vector<double>& creases) {
+  const double near = 0.1 * (breaks.back() - breaks.front()) / double(breaks.size() - 1);
+  std::vector<std::pair<double, bool>> all;
+  for (size_t i = 0; i < breaks.size(); ++i) {
+    const bool end = i == 0 || i + 1 == breaks.size();
+    bool clash = false;
+    for (double c : creases) clash = clash || std::abs(c - breaks[i]) < near;
+    if (end || !clash) all.push_back({breaks[i], false});
+  }
+  for (double c : creases) all.push_back({c, true});
+  std::sort(all.begin(), all.end());
+  breaks.clear();
+  crease.clear();
+  for (const auto& [v, k] : all) breaks.push_back(v), crease.push_back(k);
+}
+
+std::vector<double> uniformBreaks(double a, double b, int n) {
+  std::vector<double> out;
+  for (int i = 0; i <= n; ++i) out.push_back(i == n ? b : a + (b - a) * i / n);
+  return out;
+}
+
+// Closed in v when the borders v0 and v1 coincide; periodic when the first two derivatives
+// across the seam agree too (a periodic basis then keeps the seam smooth).
+void seamOf(const SeparableSurface& s, double scale, bool* closed, bool* periodic) {
+  *closed = *periodic = false;
+  if (!(s.v1 > s.v0)) return;
+  double gap = 0, slope = 0, bend = 0, size1 = 0, size2 = 0;
+  for (int i = 0; i <= 8; ++i) {
+    const double u = s.u0 + (s.u1 - s.u0) * i / 8;
+    gap = std::max(gap, (evalPoint(s, u, s.v0) - evalPoint(s, u, s.v1)).norm());
+    const Eigen::Vector3d a1 = evalPoint(s, u, s.v0, 0, 1), b1 = evalPoint(s, u, s.v1, 0, 1);
+    const Eigen::Vector3d a2 = evalPoint(s, u, s.v0, 0, 2), b2 = evalPoint(s, u, s.v1, 0, 2);
+    slope = std::max(slope, (a1 - b1).norm());
+    bend = std::max(bend, (a2 - b2).norm());
+    size1 = std::max(size1, a1.norm());
+    size2 = std::max(size2, a2.norm());
+  }
+  *closed = gap <= 1e-9 * scale;
+  *periodic = *closed && slope <= 1e-7 * std::max(size1, scale) && bend <= 1e-6 * std::max(size2, scale);
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+FourthBounds boundFourth(const SeparableSurface& s, const std::vector<double>& ub, const std::vector<double>& vb,
+                         GeneralBoundCache* cache) {
+  return {boundPartials(s, 4, 0, ub, vb, cache), boundPartials(s, 2, 2, ub, vb, cache), boundPartials(s, 0, 4, ub, vb, cache)};
+}
+
+}  // namespace
+
+BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitReport* report) {
+  if (!(o.tolerance > 0) || !std::isfinite(o.tolerance))
+    throw Error(ErrorCode::InvalidField, "tolerance: must be a positive finite number, not " + number(o.tolerance));
+  if (o.degree != 3 && o.degree != 5) throw Error(ErrorCode::InvalidField, "degree: must be 3 or 5");
+  FitReport rep;
+  const int p = o.degree, q = o.degree;
+  // Scale from a coarse look: the degenerate-border and seam tests are relative to it.
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+    for (int i = 0; i <= 16; ++i)
+      for (int j = 0; j <= 16; ++j) {
+        const Eigen::Vector3d x = evalPoint(s, s.u0 + (s.u1 - s.u0) * i / 16, s.v0 + (s.v1 - s.v0) * j / 16);
+        lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+      }
+    rep.scale = (hi - lo).norm();
+    if (!std::isfinite(rep.scale)) throw Error(ErrorCode::NonFinite, "the surface is not finite");
+  }
+  bool closed = false, periodic = false;
+  seamOf(s, rep.scale, &closed, &periodic);
+  const std::vector<double> creases = findCreases(s);
+  periodic = periodic && creases.empty();
+  rep.periodicV = periodic;
+  rep.creases = int(creases.size());
+  std::vector<double> ub = uniformBreaks(s.u0, s.u1, 4), vb = uniformBreaks(s.v0, s.v1, periodic ? 8 : 4);
+  std::vector<bool> uCrease(ub.size(), false), vCrease(vb.size(), false);
+  withCreases(vb, vCrease, creases);
+  std::vector<int> ucut(ub.size() - 1, 4), vcut(vb.size() - 1, 4);
+  BSplineSurface best;
+  double reached = HUGE_VAL;
+  GeneralBoundCache boundCache;
+  for (int iter = 1;; ++iter) {
+    CertificateGrid grid;
+    makeGrid(ub, ucut, &grid.u, &grid.uSpan);
+    makeGrid(vb, vcut, &grid.v, &grid.vSpan);
+    grid.vCrease.assign(grid.v.size(), false);
+    for (size_t j = 0; j < grid.v.size(); ++j) {
+      const size_t span = size_t(grid.vSpan[std::min(j, grid.vSpan.size() - 1)]);
+      for (size_t b : {span, span + 1})
+        if (vCrease[b] && grid.v[j] == vb[b]) grid.vCrease[j] = true;
+    }
+    const long points = long(grid.u.size()) * long(grid.v.size());
+    const int nsu = int(ub.size()) - 1, nsv = int(vb.size()) - 1;
+    if (iter > kFitMaxIterations || nsu > kFitMaxSpans || nsv > kFitMaxSpans || points > kFitMaxGridPoints) {
+      throw Error(ErrorCode::TooLarge,
+                  "the fit reached a certified deviation of " + number(reached) + " (tolerance " + number(o.tolerance) +
+                      "), normals within " + number(rep.normalDeviationDeg) + "° (" + number(o.normalToleranceDeg) + "°)" +
+                      " (limits: " + std::to_string(kFitMaxSpans) + " spans per direction, " + std::to_string(kFitMaxGridPoints) +
+                      " certificate points, " + std::to_string(kFitMaxIterations) + " refinements)");
+    }
+    const GridPartials S = tabulateSurface(s, grid.u, grid.v);
+    // Least squares, one direction at a time (the grid is a tensor product).
+    const std::vector<double> ku = clampedKnots(ub, p);
+    const std::vector<double> kvFit = periodic ? periodicKnots(vb, q) : clampedKnots(vb, q, &vCrease);
+    const Eigen::SparseMatrix<double> Au = collocation(ku, p, grid.u, 0);
+    const Eigen::SparseMatrix<double> Av = collocation(kvFit, q, grid.v, 0, periodic ? nsv : 0);
+    const Eigen::SparseMatrix<double> AvT = Av.transpose();
+    // In u, the two outer pole rows at each end are fixed by S and S_u there (Hermite), so
+    // B meets a neighbour's border and its tangent plane to the accuracy of a curve fit in v,
+    // not of the surface fit's error over the first span's width; the rows between are least squares.
+    const int n = int(ku.size()) - p - 1, inner = n - 4;
+    const Eigen::SparseMatrix<double> Af = Au.middleCols(2, inner), AfT = Af.transpose();
+    Eigen::MatrixXd Ac(Au.rows(), 4);
+    Ac << Eigen::MatrixXd(Au.col(0)), Eigen::MatrixXd(Au.col(1)), Eigen::MatrixXd(Au.col(n - 2)), Eigen::MatrixXd(Au.col(n - 1));
+    // The normal matrices are banded (degree + 1 wide, plus the periodic wrap): sparse Cholesky.
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> nu, nv;
+    if (inner > 0) nu.compute(AfT * Af);
+    nv.compute(AvT * Av);
+    if ((inner > 0 && nu.info() != Eigen::Success) || nv.info() != Eigen::Success)
+      throw Error(ErrorCode::Singular, "the fit's least-squares system is singular");
+    const double startStep = (ku[size_t(p) + 1] - ku[1]) / p, endStep = (ku[size_t(n + p - 1)] - ku[size_t(n - 1)]) / p;
+    std::vector<double> uResidual(size_t(nsu), 0.0), vResidual(size_t(nsv), 0.0);
+    Eigen::MatrixXd ru = Eigen::MatrixXd::Zero(Au.rows(), Av.rows()), rv = ru;
+    std::array<Eigen::MatrixXd, 3> net;
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::MatrixXd& X = S[0][size_t(c)];
+      const Eigen::MatrixXd& Xu = S[1][size_t(c)];
+      const Eigen::Index last = X.rows() - 1;
+      Eigen::MatrixXd fixed(4, X.cols());  // poles in u, samples in v
+      fixed << X.row(0), X.row(0) + startStep * Xu.row(0), X.row(last) - endStep * Xu.row(last), X.row(last);
+      Eigen::MatrixXd cu(n, X.cols());
+      cu.row(0) = fixed.row(0), cu.row(1) = fixed.row(1), cu.row(n - 2) = fixed.row(2), cu.row(n - 1) = fixed.row(3);
+      if (inner > 0) cu.middleRows(2, inner) = nu.solve(AfT * (X - Ac * fixed));
+      net[size_t(c)] = nv.solve(AvT * cu.transpose()).transpose();
+      // Each direction's own 1D error says which spans to halve.
+      ru += (X - Au * cu).cwiseAbs2();
+      const Eigen::MatrixXd cv = nv.solve(AvT * X.transpose());
+      rv += (X.transpose() - Av * cv).cwiseAbs2().transpose();
+    }
+    for (Eigen::Index i = 0; i < ru.rows(); ++i)
+      for (Eigen::Index j = 0; j < ru.cols(); ++j) {
+        const int su = grid.uSpan[size_t(std::min<Eigen::Index>(i, Eigen::Index(grid.uSpan.size()) - 1))];
+        const int sv = grid.vSpan[size_t(std::min<Eigen::Index>(j, Eigen::Index(grid.vSpan.size()) - 1))];
+        uResidual[size_t(su)] = std::max(uResidual[size_t(su)], std::sqrt(ru(i, j)));
+        vResidual[size_t(sv)] = std::max(vResidual[size_t(sv)], std::sqrt(rv(i, j)));
+      }
+    BSplineSurface b;
+    b.degreeU = p;
+    b.degreeV = q;
+    b.knotsU = ku;
+    b.countU = int(ku.size()) - p - 1;
+    Eigen::MatrixXd vPoles;  // rows along v, columns (component, u index)
+    {
+      Eigen::MatrixXd stacked(net[0].cols(), 3 * b.countU);
+      for (int c = 0; c < 3; ++c) stacked.middleCols(c * b.countU, b.countU) = net[size_t(c)].transpose();
+      if (periodic) {
+        periodicToClamped(vb, q, stacked, &b.knotsV, &vPoles);
+      } else {
+        b.knotsV = kvFit;
+        vPoles = stacked;
+        if (closed) vPoles.row(vPoles.rows() - 1) = vPoles.row(0) = 0.5 * (vPoles.row(0) + vPoles.row(vPoles.rows() - 1));
+      }
+    }
+    b.countV = int(vPoles.rows());
+    b.closedV = closed;
+    b.poles.resize(size_t(b.countU) * b.countV);
+    for (int i = 0; i < b.countU; ++i)
+      for (int j = 0; j < b.countV; ++j)
+        b.pole(i, j) = Eigen::Vector3d(vPoles(j, i), vPoles(j, b.countU + i), vPoles(j, 2 * b.countU + i));
+    // A border of S that is one point (a fill's centre) stays one point in B.
+    for (int side = 0; side < 2; ++side) {
+      const Eigen::Index row = side ? Eigen::Index(grid.u.size()) - 1 : 0;
+      Eigen::Vector3d first(S[0][0](row, 0), S[0][1](row, 0), S[0][2](row, 0));
+      double spread = 0;
+      for (Eigen::Index j = 0; j < Eigen::Index(grid.v.size()); ++j)
+        spread = std::max(spread, (Eigen::Vector3d(S[0][0](row, j), S[0][1](row, j), S[0][2](row, j)) - first).norm());
+      if (spread <= 1e-12 * rep.scale) {
+        b.degenerate[side] = true;
+        for (int j = 0; j < b.countV; ++j) b.pole(side ? b.countU - 1 : 0, j) = first;
+      }
+    }
+    const Certificate cert = certify(grid, S, tabulateSpline(b, grid.u, grid.v), boundFourth(s, ub, vb, &boundCache), splineFourthBounds(b), rep.scale);
+    const bool normalsMet = cert.normalDeg <= o.normalToleranceDeg;
+    if (cert.bound < reached || (cert.bound <= o.tolerance && normalsMet)) {
+      reached = cert.bound;
+      best = b;
+      rep.deviation = cert.bound;
+      rep.sampledDeviation = cert.sampled;
+      rep.normalDeviationDeg = cert.normalDeg;
+      rep.gridPoints = points;
+    }
+    rep.iterations = iter;
+    if (std::getenv("PDESURF_FIT_TRACE"))
+      std::fprintf(stderr, "fit %d: spans %dx%d grid %zux%zu bound %.3g sampled %.3g normal %.3g°\n", iter, nsu, nsv, grid.u.size(), grid.v.size(), cert.bound, cert.sampled, cert.normalDeg);
+    if (cert.bound <= o.tolerance && normalsMet) break;
+    // Halve a span whose own direction misses a quarter of the tolerance; where a cell fails
+    // with both its spans fitting, its samples are close and the bound's slack is the cause:
+    // cut that cell's span finer in the direction that dominates the slack.
+    std::vector<bool> markU(static_cast<size_t>(nsu)), markV(static_cast<size_t>(nsv));
+    for (int i = 0; i < nsu; ++i) markU[size_t(i)] = !(uResidual[size_t(i)] <= o.tolerance / 4);
+    for (int j = 0; j < nsv; ++j) markV[size_t(j)] = !(vResidual[size_t(j)] <= o.tolerance / 4);
+    std::vector<bool> finerU(static_cast<size_t>(nsu)), finerV(static_cast<size_t>(nsv));
+    for (Eigen::Index i = 0; i < cert.cell.rows(); ++i)
+      for (Eigen::Index j = 0; j < cert.cell.cols(); ++j) {
+        const bool normalMissed = !(cert.cellNormalDeg(i, j) <= o.normalToleranceDeg);
+        if (cert.cell(i, j) <= o.tolerance && !normalMissed) continue;
+        const int su = grid.uSpan[size_t(i)], sv = grid.vSpan[size_t(j)];
+        if (markU[size_t(su)] || markV[size_t(sv)]) continue;
+        if (normalMissed || !(cert.cellSampled(i, j) <= o.tolerance / 2)) {
+          markU[size_t(su)] = markV[size_t(sv)] = true;
+        } else if (cert.uDominant(i, j)) {
+          finerU[size_t(su)] = true;
+        } else {
+          finerV[size_t(sv)] = true;
+        }
+      }
+    for (int i = 0; i < nsu; ++i)
+      if (finerU[size_t(i)] && !markU[size_t(i)]) ucut[size_t(i)] *= 2;
+    for (int j = 0; j < nsv; ++j)
+      if (finerV[size_t(j)] && !markV[size_t(j)]) vcut[size_t(j)] *= 2;
+    split(ub, ucut, uCrease, markU);
+    split(vb, vcut, vCrease, markV);
+  }
+  best.name.clear();
+  if (report) *report = rep;
+  return best;
+}
+
+BSplineSurface bezierAsBSpline(int n, int m, const std::vector<Eigen::Vector3d>& net) {
+  BSplineSurface b;
+  b.degreeU = n;
+  b.degreeV = m;
+  b.countU = n + 1;
+  b.countV = m + 1;
+  b.knotsU = clampedKnots({0.0, 1.0}, n);
+  b.knotsV = clampedKnots({0.0, 1.0}, m);
+  b.poles = net;
+  return b;
+}
+
+}  // namespace pdesurf

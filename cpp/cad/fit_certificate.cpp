@@ -1,0 +1,138 @@
+#include "cad/fit_certificate.hpp"
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace pdesurf {
+namespace {
+
+// The poles of ∂^d/∂t^d along one direction (rows of `p` are poles), with the knots after it.
+Eigen::MatrixXd differenced(Eigen::MatrixXd p, std::vector<double> knots, int degree, int d) {
+  for (int r = 0; r < d; ++r) {
+    const int deg = degree - r;
+    if (deg <= 0) return Eigen::MatrixXd::Zero(std::max<Eigen::Index>(p.rows() - 1, 1), p.cols());
+    Eigen::MatrixXd q(p.rows() - 1, p.cols());
+    for (Eigen::Index i = 0; i + 1 < p.rows(); ++i) {
+      const double span = knots[size_t(i) + size_t(deg) + 1] - knots[size_t(i) + 1];
+      q.row(i) = span > 0 ? Eigen::RowVectorXd(deg * (p.row(i + 1) - p.row(i)) / span)
+                          : Eigen::RowVectorXd::Zero(p.cols());
+    }
+    knots = std::vector<double>(knots.begin() + 1, knots.end() - 1);
+    p.swap(q);
+  }
+  return p;
+}
+
+}  // namespace
+
+FourthBounds splineFourthBounds(const BSplineSurface& b) {
+  const int p = b.degreeU, q = b.degreeV;
+  // Non-empty spans in knot order: block (i, j) is the i-th non-empty u span.
+  std::vector<int> uSpans, vSpans;
+  for (int k = p; k < b.countU; ++k)
+    if (b.knotsU[size_t(k) + 1] > b.knotsU[size_t(k)]) uSpans.push_back(k);
+  for (int k = q; k < b.countV; ++k)
+    if (b.knotsV[size_t(k) + 1] > b.knotsV[size_t(k)]) vSpans.push_back(k);
+  static const int orders[3][2] = {{4, 0}, {2, 2}, {0, 4}};
+  FourthBounds out;
+  for (int c = 0; c < 3; ++c) {
+    Eigen::MatrixXd net(b.countU, b.countV);
+    for (int i = 0; i < b.countU; ++i)
+      for (int j = 0; j < b.countV; ++j) net(i, j) = b.pole(i, j)[c];
+    for (int o = 0; o < 3; ++o) {
+      const int du = orders[o][0], dv = orders[o][1];
+      Eigen::MatrixXd d = differenced(net, b.knotsU, p, du);
+      d = differenced(d.transpose(), b.knotsV, q, dv).transpose();
+      Eigen::MatrixXd& m = out[size_t(o)][size_t(c)];
+      m.resize(Eigen::Index(uSpans.size()), Eigen::Index(vSpans.size()));
+      for (size_t i = 0; i < uSpans.size(); ++i)
+        for (size_t j = 0; j < vSpans.size(); ++j) {
+          // Span k's derivative poles after r differences: k - degree .. k - r (convex hull).
+          if (du > p || dv > q) {
+            m(Eigen::Index(i), Eigen::Index(j)) = 0.0;
+            continue;
+          }
+          const int i0 = uSpans[i] - p, j0 = vSpans[j] - q;
+          m(Eigen::Index(i), Eigen::Index(j)) =
+              d.block(i0, j0, p - du + 1, q - dv + 1).cwiseAbs().maxCoeff() * (1 + 1e-13);
+        }
+    }
+  }
+  return out;
+}
+
+Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridPartials& B, const FourthBounds& bs,
+                    const FourthBounds& bb, double scale) {
+  const Eigen::Index mu = Eigen::Index(g.u.size()), mv = Eigen::Index(g.v.size());
+  Certificate out;
+  // e = S - B at grid points, per partial and component.
+  GridPartials e;
+  for (int k = 0; k < 5; ++k)
+    for (int c = 0; c < 3; ++c) e[size_t(k)][size_t(c)] = (S[size_t(k)][size_t(c)] - B[size_t(k)][size_t(c)]).cwiseAbs();
+  Eigen::MatrixXd pointError = Eigen::MatrixXd::Zero(mu, mv);
+  for (int c = 0; c < 3; ++c) pointError += e[0][size_t(c)].cwiseAbs2();
+  pointError = pointError.cwiseSqrt();
+  out.sampled = pointError.maxCoeff();
+  // Normals: the angle between S_u × S_v and B_u × B_v on the borders u = u0 and u = u1,
+  // where a patch's ends join (a blend's, a fill's side, a primary's trimline), skipping points where S's own
+  // normal is ill-conditioned in the parameters: a tangent under 1% of its largest on the patch
+  // (a collapsed or nearly collapsed border: the normal's error there is e_v / |S_v|) or
+  // tangents within 0.06° of parallel.
+  Eigen::MatrixXd angle = Eigen::MatrixXd::Zero(mu, mv);
+  double maxSu = 0, maxSv = 0;
+  {
+    Eigen::MatrixXd su2 = Eigen::MatrixXd::Zero(mu, mv), sv2 = su2;
+    for (int c = 0; c < 3; ++c) su2 += S[1][size_t(c)].cwiseAbs2(), sv2 += S[2][size_t(c)].cwiseAbs2();
+    maxSu = std::sqrt(su2.maxCoeff()), maxSv = std::sqrt(sv2.maxCoeff());
+  }
+  (void)scale;
+  auto normalAt = [&](Eigen::Index i, Eigen::Index j) {
+    if (!g.vCrease.empty() && g.vCrease[size_t(j)]) return;
+    Eigen::Vector3d su, sv, bu, bv;
+    for (int c = 0; c < 3; ++c) {
+      su[c] = S[1][size_t(c)](i, j), sv[c] = S[2][size_t(c)](i, j);
+      bu[c] = B[1][size_t(c)](i, j), bv[c] = B[2][size_t(c)](i, j);
+    }
+    const Eigen::Vector3d ns = su.cross(sv), nb = bu.cross(bv);
+    if (ns.norm() <= 1e-3 * su.norm() * sv.norm() || su.norm() <= 1e-2 * maxSu || sv.norm() <= 1e-2 * maxSv) return;
+    angle(i, j) = std::atan2(ns.cross(nb).norm(), ns.dot(nb)) * 180.0 / M_PI;
+    if (std::getenv("PDESURF_FIT_TRACE") && angle(i, j) > 1)
+      std::fprintf(stderr, "  normal %g at (%g, %g): |ns| %g |su| %g |sv| %g |nb| %g\n", angle(i, j), g.u[size_t(i)], g.v[size_t(j)], ns.norm(), su.norm(), sv.norm(), nb.norm());
+  };
+  for (Eigen::Index j = 0; j < mv; ++j) normalAt(0, j), normalAt(mu - 1, j);
+  out.normalDeg = angle.maxCoeff();
+  out.cell.resize(mu - 1, mv - 1);
+  out.cellNormalDeg.resize(mu - 1, mv - 1);
+  out.cellSampled.resize(mu - 1, mv - 1);
+  out.uDominant.resize(mu - 1, mv - 1);
+  for (Eigen::Index i = 0; i + 1 < mu; ++i)
+    for (Eigen::Index j = 0; j + 1 < mv; ++j) {
+      const double h2 = std::pow(g.u[size_t(i) + 1] - g.u[size_t(i)], 2) / 8, k2 = std::pow(g.v[size_t(j) + 1] - g.v[size_t(j)], 2) / 8;
+      const int su = g.uSpan[size_t(i)], sv = g.vSpan[size_t(j)];
+      double sum2 = 0.0, uPart = 0.0, vPart = 0.0;
+      auto corners = [&](const Eigen::MatrixXd& m) { return std::max(std::max(m(i, j), m(i + 1, j)), std::max(m(i, j + 1), m(i + 1, j + 1))); };
+      for (int c = 0; c < 3; ++c) {
+        const double a40 = bs[0][size_t(c)](su, sv) + bb[0][size_t(c)](su, sv);
+        const double a22 = bs[1][size_t(c)](su, sv) + bb[1][size_t(c)](su, sv);
+        const double a04 = bs[2][size_t(c)](su, sv) + bb[2][size_t(c)](su, sv);
+        // One level down: e_uu and e_vv over the cell, from their corners and e's fourth derivatives.
+        const double muu = corners(e[3][size_t(c)]) + h2 * a40 + k2 * a22;
+        const double mvv = corners(e[4][size_t(c)]) + h2 * a22 + k2 * a04;
+        const double bound = corners(e[0][size_t(c)]) + h2 * muu + k2 * mvv;
+        sum2 += bound * bound;
+        uPart += h2 * muu;
+        vPart += k2 * mvv;
+      }
+      out.cell(i, j) = std::sqrt(sum2) * (1 + 1e-12);
+      out.cellSampled(i, j) = corners(pointError);
+      out.cellNormalDeg(i, j) = corners(angle);
+      out.uDominant(i, j) = uPart >= vPart;
+    }
+  out.bound = out.cell.size() ? out.cell.maxCoeff() : 0.0;
+  return out;
+}
+
+}  // namespace pdesurf

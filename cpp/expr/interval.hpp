@@ -1,0 +1,21 @@
+// Interval arithmetic over expressions: an enclosure of every value an expression takes on a
+// box of (v, u), for the certified bounds of the B-spline fit (cad/derivative_bounds.hpp).
+// Each operation widens its result outward by one ulp per bound (libm is not correctly
+// rounded), so the enclosure holds in floating point. An expression that may be undefined on
+// the box (a pole, log or sqrt of a range reaching below 0, asin outside [-1, 1]) gives the
+// whole line, [-inf, inf]: callers then subdivide or give up.
+#pragma once
+#include "expr/expr.hpp"
+
+namespace pdesurf {
+
+struct Interval {
+  double lo = 0.0, hi = 0.0;
+  bool bounded() const;  // both ends finite
+  double magnitude() const;  // max |x| over the interval (inf when unbounded)
+};
+
+// vars[0] = v's interval, vars[1] = u's. Visits each distinct node once (no recursion).
+Interval enclose(const Expr& e, const Interval* vars);
+
+}  // namespace pdesurf
