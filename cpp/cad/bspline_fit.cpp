@@ -188,7 +188,8 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
   }
   bool closed = false, periodic = false;
   seamOf(s, rep.scale, &closed, &periodic);
-  const std::vector<double> creases = findCreases(s);
+  bool kinkAtEnds = false;
+  const std::vector<double> creases = findCreases(s, &kinkAtEnds);
   periodic = periodic && creases.empty();
   rep.periodicV = periodic;
   rep.creases = int(creases.size());
@@ -209,6 +210,8 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
       for (size_t b : {span, span + 1})
         if (vCrease[b] && grid.v[j] == vb[b]) grid.vCrease[j] = true;
     }
+    // A seam that is not smooth (closed, not periodic) is a crease too.
+    if ((closed && !periodic) || kinkAtEnds) grid.vCrease.front() = grid.vCrease.back() = true;
     const long points = long(grid.u.size()) * long(grid.v.size());
     const int nsu = int(ub.size()) - 1, nsv = int(vb.size()) - 1;
     if (iter > kFitMaxIterations || nsu > kFitMaxSpans || nsv > kFitMaxSpans || points > kFitMaxGridPoints) {
@@ -241,17 +244,58 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
     const double startStep = (ku[size_t(p) + 1] - ku[1]) / p, endStep = (ku[size_t(n + p - 1)] - ku[size_t(n - 1)]) / p;
     std::vector<double> uResidual(size_t(nsu), 0.0), vResidual(size_t(nsv), 0.0);
     Eigen::MatrixXd ru = Eigen::MatrixXd::Zero(Au.rows(), Av.rows()), rv = ru;
+    // u-poles of data X (u rows, any columns) with the end rows fixed by the values and the
+    // u-derivatives du0, du1 at u0 and u1.
+    auto fitU = [&](const Eigen::MatrixXd& X, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du1) {
+      const Eigen::Index last = X.rows() - 1;
+      Eigen::MatrixXd fixed(4, X.cols());
+      fixed << X.row(0), X.row(0) + startStep * du0, X.row(last) - endStep * du1, X.row(last);
+      Eigen::MatrixXd cu(n, X.cols());
+      cu.row(0) = fixed.row(0), cu.row(1) = fixed.row(1), cu.row(n - 2) = fixed.row(2), cu.row(n - 1) = fixed.row(3);
+      if (inner > 0) cu.middleRows(2, inner) = nu.solve(AfT * (X - Ac * fixed));
+      return cu;
+    };
+    // An open v-range gets the same Hermite ends in v (its corners then meet too): the end
+    // columns from S and S_v at v0 and v1, S_v's own u-fit ended by S_uv at the corners
+    // (not where a kink sits at an end: S_v there is two-sided).
+    const bool hermiteV = !closed && !kinkAtEnds;
+    const int m = int(Av.cols()), innerV = m - 4;
+    Eigen::SparseMatrix<double> AvfT;
+    Eigen::MatrixXd Avc;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> nvf;
+    double startStepV = 0, endStepV = 0;
+    if (hermiteV) {
+      const Eigen::SparseMatrix<double> Avf = Av.middleCols(2, innerV);
+      AvfT = Avf.transpose();
+      Avc.resize(Av.rows(), 4);
+      Avc << Eigen::MatrixXd(Av.col(0)), Eigen::MatrixXd(Av.col(1)), Eigen::MatrixXd(Av.col(m - 2)), Eigen::MatrixXd(Av.col(m - 1));
+      if (innerV > 0) nvf.compute(AvfT * Avf);
+      startStepV = (kvFit[size_t(q) + 1] - kvFit[1]) / q, endStepV = (kvFit[size_t(m + q - 1)] - kvFit[size_t(m - 1)]) / q;
+    }
+    Eigen::Vector3d twist[2][2];  // S_uv at the corners (u end, v end)
+    if (hermiteV)
+      for (int a = 0; a < 2; ++a)
+        for (int b2 = 0; b2 < 2; ++b2) twist[a][b2] = evalPoint(s, a ? s.u1 : s.u0, b2 ? s.v1 : s.v0, 1, 1);
     std::array<Eigen::MatrixXd, 3> net;
     for (int c = 0; c < 3; ++c) {
       const Eigen::MatrixXd& X = S[0][size_t(c)];
       const Eigen::MatrixXd& Xu = S[1][size_t(c)];
-      const Eigen::Index last = X.rows() - 1;
-      Eigen::MatrixXd fixed(4, X.cols());  // poles in u, samples in v
-      fixed << X.row(0), X.row(0) + startStep * Xu.row(0), X.row(last) - endStep * Xu.row(last), X.row(last);
-      Eigen::MatrixXd cu(n, X.cols());
-      cu.row(0) = fixed.row(0), cu.row(1) = fixed.row(1), cu.row(n - 2) = fixed.row(2), cu.row(n - 1) = fixed.row(3);
-      if (inner > 0) cu.middleRows(2, inner) = nu.solve(AfT * (X - Ac * fixed));
-      net[size_t(c)] = nv.solve(AvT * cu.transpose()).transpose();
+      const Eigen::MatrixXd& Xv = S[2][size_t(c)];
+      const Eigen::Index last = X.rows() - 1, lastV = X.cols() - 1;
+      const Eigen::MatrixXd cu = fitU(X, Xu.row(0), Xu.row(last));  // u-poles, v samples
+      if (hermiteV) {
+        Eigen::MatrixXd d0(1, 1), d1(1, 1), e0(1, 1), e1(1, 1);
+        d0(0, 0) = twist[0][0][c], d1(0, 0) = twist[1][0][c], e0(0, 0) = twist[0][1][c], e1(0, 0) = twist[1][1][c];
+        const Eigen::MatrixXd sv0 = fitU(Xv.col(0), d0, d1), sv1 = fitU(Xv.col(lastV), e0, e1);
+        Eigen::MatrixXd fixedV(n, 4);
+        fixedV << cu.col(0), cu.col(0) + startStepV * sv0, cu.col(lastV) - endStepV * sv1, cu.col(lastV);
+        Eigen::MatrixXd poles(n, m);
+        poles.col(0) = fixedV.col(0), poles.col(1) = fixedV.col(1), poles.col(m - 2) = fixedV.col(2), poles.col(m - 1) = fixedV.col(3);
+        if (innerV > 0) poles.middleCols(2, innerV) = nvf.solve(AvfT * (cu.transpose() - Avc * fixedV.transpose())).transpose();
+        net[size_t(c)] = poles;
+      } else {
+        net[size_t(c)] = nv.solve(AvT * cu.transpose()).transpose();
+      }
       // Each direction's own 1D error says which spans to halve.
       ru += (X - Au * cu).cwiseAbs2();
       const Eigen::MatrixXd cv = nv.solve(AvT * X.transpose());

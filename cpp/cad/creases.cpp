@@ -52,7 +52,7 @@ void zeros(const Expr& f, double a, double b, std::vector<double>& out) {
 
 }  // namespace
 
-std::vector<double> findCreases(const SeparableSurface& s) {
+std::vector<double> findCreases(const SeparableSurface& s, bool* kinkAtEnds) {
   std::unordered_set<const ExprNode*> seen;
   std::vector<Expr> arguments;
   for (const auto& terms : s.component)
@@ -63,8 +63,12 @@ std::vector<double> findCreases(const SeparableSurface& s) {
   std::sort(found.begin(), found.end());
   const double eps = 1e-12 * (s.v1 - s.v0);
   std::vector<double> out;
+  if (kinkAtEnds) *kinkAtEnds = false;
   for (double v : found) {
-    if (v <= s.v0 + eps || v >= s.v1 - eps) continue;  // the ends are knots already
+    if (v <= s.v0 + eps || v >= s.v1 - eps) {  // the ends are knots already
+      if (kinkAtEnds) *kinkAtEnds = true;
+      continue;
+    }
     if (!out.empty() && v - out.back() <= eps) continue;
     out.push_back(v);
     if (int(out.size()) == kMaxCreases) break;

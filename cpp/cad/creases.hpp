@@ -12,6 +12,8 @@ namespace pdesurf {
 // Sorted, distinct (to 1e-12 of the range), strictly inside (v0, v1); at most kMaxCreases
 // (more, and the rest are left to refinement).
 constexpr int kMaxCreases = 64;
-std::vector<double> findCreases(const SeparableSurface& s);
+// kinkAtEnds: set when a kink argument vanishes at v0 or v1 too: S_v there is then the mean of
+// two sides (sign(0) = 0), not a one-sided derivative.
+std::vector<double> findCreases(const SeparableSurface& s, bool* kinkAtEnds = nullptr);
 
 }  // namespace pdesurf

@@ -1,0 +1,32 @@
+// Every patch of a solved scene as a B-spline surface for CAD, each with its certificate:
+// Bézier patches exactly (their net), the others by the certified fit (bspline_fit.hpp).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cad/bspline_fit.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+struct PatchFit {
+  BSplineSurface surface;  // named after the patch
+  FitReport report;
+};
+
+struct SceneFitOptions {
+  double tolerance = 0.0;  // absolute, scene units; 0: the default, 1e-6 of the scene's diagonal
+  int degree = 5;
+};
+
+constexpr double kDefaultFitTolerance = 1e-6;  // of the scene's bounding-box diagonal
+
+// The bounding-box diagonal of every patch, from a 33×33 grid each.
+double sceneDiagonal(const std::vector<SolvedPatch>& solved);
+
+// Throws Error naming the patch ("patch 'blend': the fit reached …") when one cannot reach the
+// tolerance within the limits; nothing is returned then. *tolerance gets the one used.
+std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const SceneFitOptions& options,
+                               double* tolerance = nullptr);
+
+}  // namespace pdesurf
