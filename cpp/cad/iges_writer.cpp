@@ -104,6 +104,8 @@ std::string writeIges(const std::vector<BSplineSurface>& faces, const CadFileInf
   char stamp[24];
   std::snprintf(stamp, sizeof stamp, "%04d%02d%02d.%02d%02d%02d", t.year, t.month, t.day, t.hour, t.minute, t.second);
   const std::string title = igesText(info.title);
+  // Global fields 3, 4 and 12 (product ids, file name) have no default in IGES: never null.
+  const std::string product = hollerith(title.empty() ? "pdesurf" : title);
 
   // Entity k sits at directory sequence 2k+1; a named face's surface is followed by its name
   // (OCCT reads a name property with no name as a null string, so an unnamed face has none).
@@ -129,10 +131,10 @@ std::string writeIges(const std::vector<BSplineSurface>& faces, const CadFileInf
   // clang-format off
   const std::vector<std::string> g = {
       "1H,", "1H;",                          // 1-2 parameter and record delimiters
-      hollerith(title), hollerith(title),    // 3-4 sender's product id, file name
+      product, product,                      // 3-4 sender's product id, file name
       "7Hpdesurf", "7Hpdesurf",              // 5-6 native system, preprocessor version
       "32", "38", "6", "308", "15",          // 7-11 integer bits, single and double precision
-      hollerith(title), "1.", "2", "2HMM",   // 12-15 receiver's product id, scale, units mm
+      product, "1.", "2", "2HMM",            // 12-15 receiver's product id, scale, units mm
       "1", "1.", date,                       // 16-18 line weights, file date
       formatReal(info.tolerance),            // 19 minimum user-intended resolution
       formatReal(maxCoordinate), "", "",     // 20-22 largest coordinate, author, organisation
