@@ -6,8 +6,11 @@ BUILD="${PDESURF_BUILD_DIR:-$ROOT/build}"
 export NODE_PATH=/usr/share/nodejs  # emscripten's optimiser needs Debian's acorn (toolchain note 1)
 
 # clang and libclang-rt-14-dev: libFuzzer for the fuzz targets (scripts/fuzz, docs/testing.md).
+# libocct-*-dev: Open CASCADE 7.6 for the CAD read-back tools in tests/occt (the rest of OCCT
+# comes as their dependencies); libtbb-dev: OCCT's CMake targets link libtbb.so by path, and
+# Debian's OCCT packages do not depend on it.
 APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev zlib1g-dev chromium nodejs
-              clang libclang-rt-14-dev)
+              clang libclang-rt-14-dev libocct-data-exchange-dev libocct-modeling-algorithms-dev libtbb-dev)
 
 log() { printf '\033[1m== %s\033[0m\n' "$*"; }
 

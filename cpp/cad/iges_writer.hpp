@@ -1,0 +1,21 @@
+// IGES 5.3 text for a set of B-spline faces: each face one independent rational B-spline
+// surface entity (type 128, polynomial flag set, closed-in-v flag from the seam) bounded by
+// its parameter ranges, named by its entity label (first 8 characters) and a name property
+// (type 406 form 15, the whole name). Units millimetres; the tolerance is the global section's
+// minimum resolution. IGES text is ASCII: other characters become '?'.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cad/bspline_surface.hpp"
+#include "cad/cad_file.hpp"
+
+namespace pdesurf {
+
+// Throws std::invalid_argument (checkFacesForCad) when a face cannot be written.
+std::string writeIges(const std::vector<BSplineSurface>& faces, const CadFileInfo& info);
+
+// UTF-8 text as IGES string content: printable ASCII kept, controls as spaces, others '?'.
+std::string igesText(const std::string& utf8);
+
+}  // namespace pdesurf
