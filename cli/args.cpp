@@ -1,3 +1,5 @@
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +15,8 @@ const char* kUsage =
     "  pdesurf sample SCENE.json --control-net [--patch NAME]                 print a Bezier patch's solved control points\n"
     "  pdesurf export SCENE.json -o FILE [--format F] [--grid NUxNV]          write every patch to FILE, F: obj (text),\n"
     "      stl, ply (binary) or glb (glTF 2.0 binary); default: FILE's extension, else obj\n"
+    "  pdesurf export SCENE.json -o FILE.step|.igs [--tol T] [--degree 3|5]  every patch as a B-spline face within the\n"
+    "      certified deviation T (scene units; default 1e-6 of the scene's diagonal); STEP AP214 or IGES 5.3\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
     "  pdesurf check SCENE.json [--json] [--grid NxN]                         join certificate (G0/G1/G2, folds) and\n"
@@ -56,14 +60,28 @@ Options parseArgs(const std::vector<std::string>& args) {
     else if (a == "--json") o.json = true;
     else if (a == "--control-net") o.controlNet = true;
     else if (a == "-o" || a == "--output") o.output = value();
-    else if (a == "--format") o.format = value(), parseMeshFormat(o.format);  // refused here, before any work
+    else if (a == "--format") {
+      o.format = value();
+      if (o.format != "step" && o.format != "stp" && o.format != "iges" && o.format != "igs") parseMeshFormat(o.format);  // refused here, before any work
+    } else if (a == "--tol") {
+      const std::string& t = value();
+      char* end = nullptr;
+      o.tolerance = std::strtod(t.c_str(), &end);
+      if (t.empty() || *end != '\0' || !(o.tolerance > 0) || !std::isfinite(o.tolerance))
+        throw std::runtime_error("--tol expects a positive finite number, got '" + t.substr(0, 40) + "'");
+    } else if (a == "--degree") {
+      const std::string& d = value();
+      if (d != "3" && d != "5") throw std::runtime_error("--degree expects 3 or 5, got '" + d.substr(0, 40) + "'");
+      o.degree = d[0] - '0';
+    }
     else if (!a.empty() && a[0] == '-' && o.command != "decode-link") throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;
     else throw std::runtime_error("unexpected argument '" + a + "'");
   }
   if (o.scenePath.empty()) throw std::runtime_error(o.command == "decode-link" ? "missing the link" : "missing SCENE.json");
-  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply or .glb)");
+  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply, .glb, .step, .stp, .igs or .iges)");
   if (o.command != "export" && !o.format.empty()) throw std::runtime_error("--format applies to export only");
+  if (o.command != "export" && (o.tolerance > 0 || o.degree != 5)) throw std::runtime_error("--tol and --degree apply to export only");
   return o;
 }
 

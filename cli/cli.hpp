@@ -9,6 +9,8 @@ namespace pdesurf::cli {
 struct Options {
   std::string command, scenePath, patch, output, method, format;
   int nu = 16, nv = 16;
+  double tolerance = 0.0;  // export to CAD: 0 is the default (1e-6 of the scene's diagonal)
+  int degree = 5;
   bool gridGiven = false, json = false, controlNet = false;
 };
 
@@ -18,6 +20,9 @@ std::string readFile(const std::string& path);
 
 int runSample(const Options& o, std::ostream& out);
 int runExport(const Options& o);
+enum class CadFormat { None, Step, Iges };
+CadFormat cadFormatOf(const Options& o);  // by --format or the output's extension
+int runCadExport(const Options& o, CadFormat format, std::ostream& out);
 int runCompare(const Options& o, std::ostream& out);
 int runEncodeLink(const Options& o, std::ostream& out);
 int runDecodeLink(const Options& o, std::ostream& out);

@@ -1,4 +1,5 @@
 #include <fstream>
+#include <iostream>
 #include <ostream>
 #include <stdexcept>
 #include <vector>
@@ -67,6 +68,7 @@ int runSample(const Options& o, std::ostream& out) {
 }
 
 int runExport(const Options& o) {
+  if (const CadFormat cad = cadFormatOf(o); cad != CadFormat::None) return runCadExport(o, cad, std::cout);
   const Scene scene = parseScene(readFile(o.scenePath));
   checkSceneGrid(scene, o.nu, o.nv);
   const MeshFormat format = o.format.empty() ? meshFormatFromPath(o.output) : parseMeshFormat(o.format);

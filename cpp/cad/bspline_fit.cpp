@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 
+#include "basis/general_function.hpp"
 #include "cad/creases.hpp"
 #include "cad/derivative_bounds.hpp"
 #include "cad/fit_certificate.hpp"
@@ -34,6 +36,7 @@ GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double
   const Eigen::Index mu = Eigen::Index(u.size()), mv = Eigen::Index(v.size());
   GridPartials out;
   static const char* axis[3] = {"x", "y", "z"};
+  std::map<const void*, std::vector<std::vector<double>>> generalRows;
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[size_t(c)];
     const Eigen::Index T = Eigen::Index(terms.size());
@@ -45,8 +48,23 @@ GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double
       terms[size_t(t)].G.tabulate(u.data(), int(mu), 2, tab.data());
       for (int a = 0; a < 3; ++a)
         for (Eigen::Index i = 0; i < mu; ++i) G[size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
-      for (Eigen::Index j = 0; j < mv; ++j)
-        for (int b = 0; b < 3; ++b) g[size_t(b)](j, t) = terms[size_t(t)].g.eval(v[size_t(j)], b);
+      const VFunction& f = terms[size_t(t)].g;
+      if (f.family == Family::General) {
+        // g, g', g'' over every v at once: one compiled program per general function.
+        auto& rows = generalRows[f.general.get()];
+        if (rows.empty()) {
+          rows.assign(3, std::vector<double>(size_t(mv)));
+          const ExprProgram program(std::vector<Expr>{f.general->derivativeExpr(0), f.general->derivativeExpr(1),
+                                                      f.general->derivativeExpr(2)});
+          double* outs[3] = {rows[0].data(), rows[1].data(), rows[2].data()};
+          program.runAll(v.data(), nullptr, size_t(mv), outs);
+        }
+        for (int b = 0; b < 3; ++b)
+          for (Eigen::Index j = 0; j < mv; ++j) g[size_t(b)](j, t) = rows[size_t(b)][size_t(j)];
+      } else {
+        for (Eigen::Index j = 0; j < mv; ++j)
+          for (int b = 0; b < 3; ++b) g[size_t(b)](j, t) = f.eval(v[size_t(j)], b);
+      }
     }
     for (int k = 0; k < 5; ++k) {
       Eigen::MatrixXd& m = out[size_t(k)][size_t(c)];
@@ -343,7 +361,12 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
         for (int j = 0; j < b.countV; ++j) b.pole(side ? b.countU - 1 : 0, j) = first;
       }
     }
-    const Certificate cert = certify(grid, S, tabulateSpline(b, grid.u, grid.v), boundFourth(s, ub, vb, &boundCache), splineFourthBounds(b), rep.scale);
+    const FourthBounds boundS = boundFourth(s, ub, vb, &boundCache), boundB = splineFourthBounds(b);
+    if (std::getenv("PDESURF_FIT_TRACE"))
+      for (int o = 0; o < 3; ++o)
+        std::fprintf(stderr, "  bounds %d: S %.3g B %.3g\n", o, std::max({boundS[o][0].maxCoeff(), boundS[o][1].maxCoeff(), boundS[o][2].maxCoeff()}),
+                     std::max({boundB[o][0].maxCoeff(), boundB[o][1].maxCoeff(), boundB[o][2].maxCoeff()}));
+    const Certificate cert = certify(grid, S, tabulateSpline(b, grid.u, grid.v), boundS, boundB, rep.scale);
     const bool normalsMet = cert.normalDeg <= o.normalToleranceDeg;
     if (cert.bound < reached || (cert.bound <= o.tolerance && normalsMet)) {
       reached = cert.bound;

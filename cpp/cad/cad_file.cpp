@@ -1,4 +1,5 @@
 #include "cad/cad_file.hpp"
+#include "common/errors.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -32,11 +33,11 @@ std::vector<Eigen::Vector3d> borderPoles(const BSplineSurface& s, int border) {
 
 void checkFacesForCad(const std::vector<BSplineSurface>& faces, const CadFileInfo& info) {
   if (!(info.tolerance > 0.0) || !std::isfinite(info.tolerance))
-    throw std::invalid_argument("CAD export: the tolerance must be a positive number");
-  if (faces.empty()) throw std::invalid_argument("CAD export: no faces to write");
+    throw Error(ErrorCode::InvalidField, "CAD export: the tolerance must be a positive number");
+  if (faces.empty()) throw Error(ErrorCode::InvalidField, "CAD export: no faces to write");
   for (const BSplineSurface& s : faces) {
     auto fail = [&](const std::string& why) {
-      throw std::invalid_argument("CAD export: face '" + s.name + "': " + why);
+      throw Error(ErrorCode::InvalidField, "CAD export: face '" + s.name + "': " + why);
     };
     std::string why;
     if (!wellFormed(s, &why)) fail(why);
@@ -64,7 +65,7 @@ CadStamp cadStamp(const CadFileInfo& info) {
                   &r.second) != 6 ||
       r.year < 1000 || r.year > 9999 || r.month < 1 || r.month > 12 || r.day < 1 || r.day > 31 || r.hour < 0 ||
       r.hour > 23 || r.minute < 0 || r.minute > 59 || r.second < 0 || r.second > 60)
-    throw std::invalid_argument("CAD export: timestamp is not YYYY-MM-DDThh:mm:ss");
+    throw Error(ErrorCode::InvalidField, "CAD export: timestamp is not YYYY-MM-DDThh:mm:ss");
   return r;
 }
 

@@ -17,7 +17,7 @@ struct CadFileInfo {
   std::string timestamp;
 };
 
-// Throws std::invalid_argument naming the face unless every face is wellFormed, closedV faces
+// Throws Error(InvalidField) naming the face unless every face is wellFormed, closedV faces
 // close (first and last pole columns within tolerance), degenerate borders are points (all
 // their poles within tolerance) and at least one border is left to bound the face.
 void checkFacesForCad(const std::vector<BSplineSurface>& faces, const CadFileInfo& info);

@@ -61,7 +61,9 @@ std::vector<double> findCreases(const SeparableSurface& s, bool* kinkAtEnds) {
   std::vector<double> found;
   for (const Expr& f : arguments) zeros(f, s.v0, s.v1, found);
   std::sort(found.begin(), found.end());
-  const double eps = 1e-12 * (s.v1 - s.v0);
+  // Kinks closer than this are one corner (a scene may pin a corner's value with two sign()s
+  // 1e-9 apart): a knot span that short would make the spline's derivative bounds meaningless.
+  const double eps = 1e-6 * (s.v1 - s.v0);
   std::vector<double> out;
   if (kinkAtEnds) *kinkAtEnds = false;
   for (double v : found) {

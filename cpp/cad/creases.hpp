@@ -9,7 +9,7 @@
 
 namespace pdesurf {
 
-// Sorted, distinct (to 1e-12 of the range), strictly inside (v0, v1); at most kMaxCreases
+// Sorted, distinct (kinks within 1e-6 of the range are one), strictly inside (v0, v1); at most kMaxCreases
 // (more, and the rest are left to refinement).
 constexpr int kMaxCreases = 64;
 // kinkAtEnds: set when a kink argument vanishes at v0 or v1 too: S_v there is then the mean of

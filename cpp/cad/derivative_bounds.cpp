@@ -36,15 +36,27 @@ double bernsteinBound(std::vector<double> b, int k) {
 // Interval arithmetic overestimates (each occurrence of v varies on its own); where the
 // enclosure is far above the values at the ends and the middle, halve the interval, up to
 // `depth` times: the overestimate shrinks with the width.
-double boundGeneral(const GeneralFunction& g, int k, double a, double b, int depth) {
+double boundGeneral(const GeneralFunction& g, int k, double a, double b, int depth, GeneralBoundCache* cache) {
+  std::shared_ptr<const IntervalProgram> program;
+  if (cache) {
+    auto& slot = cache->programs[{static_cast<const void*>(&g), k}];
+    if (!slot) slot = std::make_shared<const IntervalProgram>(g.derivativeExpr(k));
+    program = slot;
+  } else {
+    program = std::make_shared<const IntervalProgram>(g.derivativeExpr(k));
+  }
   const Interval vars[2] = {{a, b}, {0.0, 0.0}};
-  const double enclosed = enclose(g.derivativeExpr(k), vars).magnitude();
+  const double enclosed = program->run(vars).magnitude();
   if (depth == 0) return enclosed;
   double seen = 0.0;
-  for (double v : {a, 0.5 * (a + b), b}) seen = std::max(seen, std::abs(g.eval(v, k)));
+  const Expr& d = g.derivativeExpr(k);
+  for (double v : {a, 0.5 * (a + b), b}) {
+    const double at[2] = {v, 0.0};
+    seen = std::max(seen, std::abs(evaluate(*d, at)));
+  }
   if (enclosed <= 4 * seen + 1e-300) return enclosed;
   const double mid = 0.5 * (a + b);
-  return std::max(boundGeneral(g, k, a, mid, depth - 1), boundGeneral(g, k, mid, b, depth - 1));
+  return std::max(boundGeneral(g, k, a, mid, depth - 1, cache), boundGeneral(g, k, mid, b, depth - 1, cache));
 }
 
 }  // namespace
@@ -86,7 +98,7 @@ double boundVFunction(const VFunction& g, int k, double a, double b) {
       unit[size_t(g.n)] = 1.0;
       return bernsteinBound(unit, k);
     }
-    case Family::General: return boundGeneral(*g.general, k, a, b, 6);
+    case Family::General: return boundGeneral(*g.general, k, a, b, 6, nullptr);
   }
   return HUGE_VAL;
 }
@@ -108,7 +120,7 @@ std::array<Eigen::MatrixXd, 3> boundPartials(const SeparableSurface& s, int du, 
         if (cache && g.family == Family::General) {
           const auto key = std::make_tuple(static_cast<const void*>(g.general.get()), dv, a, b);
           auto it = cache->bounds.find(key);
-          if (it == cache->bounds.end()) it = cache->bounds.emplace(key, boundVFunction(g, dv, a, b)).first;
+          if (it == cache->bounds.end()) it = cache->bounds.emplace(key, boundGeneral(*g.general, dv, a, b, 6, cache)).first;
           V(j, Eigen::Index(t)) = it->second;
         } else {
           V(j, Eigen::Index(t)) = boundVFunction(g, dv, a, b);

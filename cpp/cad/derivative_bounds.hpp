@@ -6,10 +6,12 @@
 #pragma once
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <map>
 #include <tuple>
 #include <vector>
 
+#include "expr/interval.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf {
@@ -23,6 +25,8 @@ double boundVFunction(const VFunction& g, int k, double a, double b);
 // refinement keeps most spans from one round to the next.
 struct GeneralBoundCache {
   std::map<std::tuple<const void*, int, double, double>, double> bounds;
+  // Each general function's derivatives compiled once for enclosures and for sampling.
+  std::map<std::pair<const void*, int>, std::shared_ptr<const IntervalProgram>> programs;
 };
 
 // bounds[c](i, j) >= |∂^du_u ∂^dv_v X_c| over [uBreaks[i], uBreaks[i+1]] × [vBreaks[j], vBreaks[j+1]].

@@ -12,7 +12,7 @@
 
 namespace pdesurf {
 
-// Throws std::invalid_argument (checkFacesForCad) when a face cannot be written.
+// Throws Error(InvalidField) (checkFacesForCad) when a face cannot be written.
 std::string writeIges(const std::vector<BSplineSurface>& faces, const CadFileInfo& info);
 
 // UTF-8 text as IGES string content: printable ASCII kept, controls as spaces, others '?'.

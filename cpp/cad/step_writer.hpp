@@ -12,7 +12,7 @@
 
 namespace pdesurf {
 
-// Throws std::invalid_argument (checkFacesForCad) when a face cannot be written.
+// Throws Error(InvalidField) (checkFacesForCad) when a face cannot be written.
 std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInfo& info);
 
 // A STEP string literal for UTF-8 text: quoted, an apostrophe doubled, a backslash doubled,

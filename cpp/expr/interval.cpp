@@ -112,22 +112,35 @@ Interval power(const Interval& a, const ExprNode& exponent, const Interval& b) {
 bool Interval::bounded() const { return std::isfinite(lo) && std::isfinite(hi); }
 double Interval::magnitude() const { return bounded() ? std::max(std::abs(lo), std::abs(hi)) : kInf; }
 
-Interval enclose(const Expr& root, const Interval* vars) {
+IntervalProgram::IntervalProgram(const Expr& root) {
   // Post-order over the DAG with an explicit stack: derived expressions can be thousands deep.
-  std::unordered_map<const ExprNode*, Interval> done;
+  std::unordered_map<const ExprNode*, int> index;
   std::vector<std::pair<const ExprNode*, bool>> stack{{root.get(), false}};
   while (!stack.empty()) {
     auto [n, expanded] = stack.back();
     stack.pop_back();
-    if (done.count(n)) continue;
+    if (index.count(n)) continue;
     if (!expanded) {
       stack.push_back({n, true});
-      if (n->a && !done.count(n->a.get())) stack.push_back({n->a.get(), false});
-      if (n->b && !done.count(n->b.get())) stack.push_back({n->b.get(), false});
+      if (n->a && !index.count(n->a.get())) stack.push_back({n->a.get(), false});
+      if (n->b && !index.count(n->b.get())) stack.push_back({n->b.get(), false});
       continue;
     }
-    using Op = ExprNode::Op;
-    const Interval a = n->a ? done.at(n->a.get()) : Interval{}, b = n->b ? done.at(n->b.get()) : Interval{};
+    Step step{n};
+    if (n->a) step.a = index.at(n->a.get());
+    if (n->b) step.b = index.at(n->b.get());
+    index[n] = int(steps_.size());
+    steps_.push_back(step);
+  }
+  values_.resize(steps_.size());
+}
+
+Interval IntervalProgram::run(const Interval* vars) const {
+  using Op = ExprNode::Op;
+  for (size_t k = 0; k < steps_.size(); ++k) {
+    const ExprNode* n = steps_[k].node;
+    const Interval a = steps_[k].a >= 0 ? values_[size_t(steps_[k].a)] : Interval{};
+    const Interval b = steps_[k].b >= 0 ? values_[size_t(steps_[k].b)] : Interval{};
     Interval r;
     switch (n->op) {
       case Op::Const: r = {n->value, n->value}; break;
@@ -140,9 +153,11 @@ Interval enclose(const Expr& root, const Interval* vars) {
       case Op::Pow: r = power(a, *n->b, b); break;
       case Op::Call: r = call(n->fn, a); break;
     }
-    done[n] = r;
+    values_[k] = r;
   }
-  return done.at(root.get());
+  return values_.back();
 }
+
+Interval enclose(const Expr& e, const Interval* vars) { return IntervalProgram(e).run(vars); }
 
 }  // namespace pdesurf

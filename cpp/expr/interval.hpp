@@ -5,6 +5,8 @@
 // the box (a pole, log or sqrt of a range reaching below 0, asin outside [-1, 1]) gives the
 // whole line, [-inf, inf]: callers then subdivide or give up.
 #pragma once
+#include <vector>
+
 #include "expr/expr.hpp"
 
 namespace pdesurf {
@@ -15,7 +17,24 @@ struct Interval {
   double magnitude() const;  // max |x| over the interval (inf when unbounded)
 };
 
-// vars[0] = v's interval, vars[1] = u's. Visits each distinct node once (no recursion).
+// An expression compiled for enclosures: its distinct nodes in an order where operands come
+// first, so each enclosure is one pass over an array (no recursion, no hashing).
+class IntervalProgram {
+ public:
+  explicit IntervalProgram(const Expr& e);
+  // vars[0] = v's interval, vars[1] = u's.
+  Interval run(const Interval* vars) const;
+
+ private:
+  struct Step {
+    const ExprNode* node;
+    int a = -1, b = -1;  // operands' steps
+  };
+  std::vector<Step> steps_;
+  mutable std::vector<Interval> values_;
+};
+
+// One enclosure (compiles, runs once).
 Interval enclose(const Expr& e, const Interval* vars);
 
 }  // namespace pdesurf

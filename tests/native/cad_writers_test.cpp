@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "cad/iges_writer.hpp"
+#include "common/errors.hpp"
 #include "cad/step_writer.hpp"
 
 using namespace pdesurf;
@@ -330,8 +331,8 @@ TEST_CASE("cad writers: a long name continues over parameter records") {
 
 TEST_CASE("cad writers: faces that cannot be written are refused by name") {
   auto refuses = [](std::vector<BSplineSurface> faces, CadFileInfo info = kInfo) {
-    CHECK_THROWS_AS(writeStep(faces, info), std::invalid_argument);
-    CHECK_THROWS_AS(writeIges(faces, info), std::invalid_argument);
+    CHECK_THROWS_AS(writeStep(faces, info), Error);
+    CHECK_THROWS_AS(writeIges(faces, info), Error);
   };
   refuses({});
   BSplineSurface s = surface("bad", 4, 5, false);
@@ -351,7 +352,7 @@ TEST_CASE("cad writers: faces that cannot be written are refused by name") {
   try {
     writeStep({surface("fine", 4, 5, false), s}, kInfo);
     FAIL("a degenerate seam was written");
-  } catch (const std::invalid_argument& e) {
+  } catch (const Error& e) {
     CHECK(std::string(e.what()).find("'tube'") != std::string::npos);
   }
   // An empty timestamp is a fixed one: the same bytes every time. An empty title leaves no

@@ -1,0 +1,86 @@
+// pdesurf export SCENE -o F.step|.stp|.igs|.iges [--tol T] [--degree 3|5]: every patch as a
+// B-spline face with its certified deviation (cpp/cad/). Written to a temporary file beside F
+// and renamed: a patch that cannot reach the tolerance leaves nothing behind.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "cad/iges_writer.hpp"
+#include "cad/scene_fit.hpp"
+#include "cad/step_writer.hpp"
+#include "cli.hpp"
+#include "common/errors.hpp"
+
+namespace pdesurf::cli {
+
+namespace {
+std::string lowerExtension(const std::string& path) {
+  const size_t dot = path.rfind('.'), slash = path.find_last_of("/\\");
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+}  // namespace
+
+CadFormat cadFormatOf(const Options& o) {
+  const std::string f = o.format.empty() ? lowerExtension(o.output) : o.format;
+  if (f == "step" || f == "stp") return CadFormat::Step;
+  if (f == "iges" || f == "igs") return CadFormat::Iges;
+  return CadFormat::None;
+}
+
+int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
+  const Scene scene = parseScene(readFile(o.scenePath));
+  const auto solved = solveScene(scene);
+  SceneFitOptions fit;
+  fit.tolerance = o.tolerance;
+  fit.degree = o.degree;
+  double tolerance = 0;
+  const std::vector<PatchFit> fits = fitScene(solved, fit, &tolerance);
+  std::vector<BSplineSurface> faces;
+  char line[400];
+  std::snprintf(line, sizeof line, "tolerance %.3g (scene units; %s)\n", tolerance,
+                o.tolerance > 0 ? "given" : "1e-6 of the scene's diagonal");
+  out << line;
+  for (const PatchFit& f : fits) {
+    const FitReport& r = f.report;
+    if (r.exact) {
+      std::snprintf(line, sizeof line, "  %s: exact (a Bezier net), degree %dx%d, poles %dx%d\n", f.surface.name.c_str(),
+                    f.surface.degreeU, f.surface.degreeV, f.surface.countU, f.surface.countV);
+    } else {
+      std::snprintf(line, sizeof line,
+                    "  %s: certified deviation %.3g (sampled %.3g), normals at the ends within %.2g deg, degree %dx%d, "
+                    "poles %dx%d%s\n",
+                    f.surface.name.c_str(), r.deviation, r.sampledDeviation, r.normalDeviationDeg, f.surface.degreeU,
+                    f.surface.degreeV, f.surface.countU, f.surface.countV, r.creases ? ", knots at creases" : "");
+    }
+    out << line;
+    faces.push_back(f.surface);
+  }
+  CadFileInfo info;
+  info.title = scene.title;
+  info.tolerance = tolerance;
+  const std::string text = format == CadFormat::Step ? writeStep(faces, info) : writeIges(faces, info);
+  // Beside the target, so the rename stays on one file system.
+  const std::string temporary = o.output + ".part-" + std::to_string(getpid());
+  {
+    std::ofstream f(temporary, std::ios::binary);
+    if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
+    f << text;
+    f.close();
+    if (!f) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("writing '" + o.output + "' failed");
+    }
+  }
+  if (std::rename(temporary.c_str(), o.output.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + o.output + "'");
+  }
+  return 0;
+}
+
+}  // namespace pdesurf::cli
