@@ -273,10 +273,11 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
       if (inner > 0) cu.middleRows(2, inner) = nu.solve(AfT * (X - Ac * fixed));
       return cu;
     };
-    // An open v-range gets the same Hermite ends in v (its corners then meet too): the end
+    // A v-range that is not periodic gets the same Hermite ends in v (an open patch's corners
+    // then meet too; a closed one's seam, a crease, is one-sided on each side): the end
     // columns from S and S_v at v0 and v1, S_v's own u-fit ended by S_uv at the corners
     // (not where a kink sits at an end: S_v there is two-sided).
-    const bool hermiteV = !closed && !kinkAtEnds;
+    const bool hermiteV = !periodic && !kinkAtEnds;
     const int m = int(Av.cols()), innerV = m - 4;
     Eigen::SparseMatrix<double> AvfT;
     Eigen::MatrixXd Avc;
@@ -392,9 +393,10 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
         const bool normalMissed = !(cert.cellNormalDeg(i, j) <= o.normalToleranceDeg);
         if (cert.cell(i, j) <= o.tolerance && !normalMissed) continue;
         const int su = grid.uSpan[size_t(i)], sv = grid.vSpan[size_t(j)];
-        if (markU[size_t(su)] || markV[size_t(sv)]) continue;
         if (normalMissed || !(cert.cellSampled(i, j) <= o.tolerance / 2)) {
           markU[size_t(su)] = markV[size_t(sv)] = true;
+        } else if (markU[size_t(su)] || markV[size_t(sv)]) {
+          continue;  // refined anyway
         } else if (cert.uDominant(i, j)) {
           finerU[size_t(su)] = true;
         } else {

@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "basis/general_function.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 namespace {
@@ -22,31 +23,35 @@ void collectKinkArguments(const Expr& root, std::unordered_set<const ExprNode*>&
   }
 }
 
-// Zeros of f on (a, b) by sign changes on a fine grid, then bisection to the last bit.
-void zeros(const Expr& f, double a, double b, std::vector<double>& out) {
-  constexpr int kSamples = 4096;
-  auto at = [&](double v) {
-    const double vars[2] = {v, 0.0};
-    return evaluate(*f, vars);
-  };
-  double x0 = a, f0 = at(a);
-  for (int k = 1; k <= kSamples; ++k) {
-    const double x1 = k == kSamples ? b : a + (b - a) * k / kSamples, f1 = at(x1);
-    if (std::isfinite(f0) && std::isfinite(f1) && (f0 == 0 || (f0 < 0) != (f1 < 0))) {
-      double lo = x0, hi = x1, flo = f0;
-      if (f0 == 0) {
-        hi = lo;
-      } else {
-        for (int it = 0; it < 80 && hi - lo > 0; ++it) {
-          const double mid = 0.5 * (lo + hi), fm = at(mid);
-          if (mid <= lo || mid >= hi) break;
-          if ((fm < 0) == (flo < 0) && fm != 0) lo = mid, flo = fm;
-          else hi = mid;
-        }
+// Zeros of each argument on (a, b): sign changes on a fine grid (all arguments in one
+// compiled pass), then bisection to the last bit.
+void zeros(const std::vector<Expr>& args, double a, double b, std::vector<double>& out) {
+  constexpr int kSamples = 2048;
+  std::vector<double> v(kSamples + 1);
+  for (int k = 0; k <= kSamples; ++k) v[size_t(k)] = k == kSamples ? b : a + (b - a) * k / kSamples;
+  std::vector<std::vector<double>> values(args.size(), std::vector<double>(v.size()));
+  std::vector<double*> outs;
+  for (auto& row : values) outs.push_back(row.data());
+  ExprProgram(args).runAll(v.data(), nullptr, v.size(), outs.data());
+  for (size_t r = 0; r < args.size(); ++r) {
+    auto at = [&](double x) {
+      const double vars[2] = {x, 0.0};
+      return evaluate(*args[r], vars);
+    };
+    const std::vector<double>& f = values[r];
+    for (size_t k = 1; k < v.size(); ++k) {
+      const double f0 = f[k - 1], f1 = f[k];
+      if (!std::isfinite(f0) || !std::isfinite(f1) || !(f0 == 0 || (f0 < 0) != (f1 < 0))) continue;
+      double lo = v[k - 1], hi = f0 == 0 ? lo : v[k], flo = f0;
+      for (int it = 0; it < 80 && hi > lo; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        const double fm = at(mid);
+        if ((fm < 0) == (flo < 0) && fm != 0) lo = mid, flo = fm;
+        else hi = mid;
       }
       out.push_back(hi);
     }
-    x0 = x1, f0 = f1;
   }
 }
 
@@ -59,7 +64,7 @@ std::vector<double> findCreases(const SeparableSurface& s, bool* kinkAtEnds) {
     for (const SeparableTerm& t : terms)
       if (t.g.family == Family::General) collectKinkArguments(t.g.general->expr(), seen, arguments);
   std::vector<double> found;
-  for (const Expr& f : arguments) zeros(f, s.v0, s.v1, found);
+  if (!arguments.empty()) zeros(arguments, s.v0, s.v1, found);
   std::sort(found.begin(), found.end());
   // Kinks closer than this are one corner (a scene may pin a corner's value with two sign()s
   // 1e-9 apart): a knot span that short would make the spline's derivative bounds meaningless.

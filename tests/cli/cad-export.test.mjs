@@ -1,0 +1,124 @@
+// pdesurf export to STEP and IGES, read back by Open CASCADE (tests/occt/occt_readback): every
+// example, each file a valid shape with one face per patch, named after it, within the
+// tolerance of the core's surface at grid points that do not line up with the knots. A fit
+// loosened past the tolerance fails the same check; an unreachable tolerance is a named error
+// that leaves no file. docs/cad-export.md.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join } from 'node:path';
+
+const root = new URL('../../', import.meta.url).pathname;
+const cli = process.env.PDESURF_CLI ?? join(root, 'build/native/pdesurf');
+const readback = process.env.PDESURF_OCCT_READBACK ?? join(dirname(cli), 'tests/occt/occt_readback');
+const sanitized = process.env.PDESURF_CLI_SANITIZED === '1';
+const dir = mkdtempSync(join(tmpdir(), 'pdesurf-cad-'));
+const example = (id) => join(root, 'examples', `${id}.json`);
+const GRID = '7x11'; // odd counts: the samples fall between knots
+
+function runAsync(cmd, args) {
+  return new Promise((resolve) => {
+    const p = spawn(cmd, args);
+    let stdout = '', stderr = '';
+    p.stdout.on('data', (d) => (stdout += d));
+    p.stderr.on('data', (d) => (stderr += d));
+    p.on('close', (status) => resolve({ status, stdout, stderr }));
+  });
+}
+
+// The core's own surface at grid points, per patch: (u, v, x, y, z) from `pdesurf sample`.
+function samples(id, patches) {
+  return patches.map((name) => {
+    const r = spawnSync(cli, ['sample', example(id), '--patch', name, '--grid', GRID], { encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    const rows = r.stdout.trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
+    return { name, samples: rows };
+  });
+}
+
+function parseExport(stdout) {
+  const tolerance = Number(/^tolerance (\S+)/m.exec(stdout)[1]);
+  const patches = [...stdout.matchAll(/^ {2}(\S+): (exact|certified deviation (\S+))/gm)].map((m) => ({
+    name: m[1], exact: m[2] === 'exact', deviation: m[3] ? Number(m[3]) : 0,
+  }));
+  return { tolerance, patches };
+}
+
+async function exportAndReadBack(id, ext) {
+  const file = join(dir, `${id}.${ext}`);
+  const r = await runAsync(cli, ['export', example(id), '-o', file]);
+  assert.equal(r.status, 0, `${id}.${ext}: ${r.stderr}`);
+  const { tolerance, patches } = parseExport(r.stdout);
+  for (const p of patches) assert.ok(p.deviation <= tolerance, `${id} ${p.name}: ${p.deviation} > ${tolerance}`);
+  const expect = join(dir, `${id}.${ext}.expect.json`);
+  writeFileSync(expect, JSON.stringify({ tolerance, faces: samples(id, patches.map((p) => p.name)) }));
+  const back = await runAsync(readback, [file, expect]);
+  const report = JSON.parse(back.stdout || '{}');
+  assert.equal(back.status, 0, `${id}.${ext}: ${JSON.stringify(report.errors)} ${back.stderr.slice(0, 400)}`);
+  assert.equal(report.valid, true);
+  assert.equal(report.faceCount, patches.length);
+  for (const f of report.faces) assert.ok(f.maxDeviation <= tolerance, `${id} ${f.name}: ${f.maxDeviation}`);
+  return report;
+}
+
+// Under AddressSanitizer (the sanitize row) two small examples; natively every one. The
+// aeroplane (22 patches, 31 s a file) goes out as STEP only.
+const index = JSON.parse(readFileSync(join(root, 'examples/index.json'), 'utf8'));
+const ids = (index.examples ?? index).map((e) => e.id ?? e);
+const chosen = sanitized ? ['you2004-fig4a', 'wu2015-fig1a'] : ids;
+
+test('the Open CASCADE read-back tool is built', () => {
+  assert.ok(existsSync(readback), `${readback} is missing: scripts/test builds it (OCCT from Debian's libocct-*-dev)`);
+});
+
+test(`every example (${chosen.length}) exported as STEP and IGES reads back in Open CASCADE within its tolerance`, async () => {
+  const jobs = [];
+  for (const id of chosen) {
+    jobs.push([id, 'step']);
+    if (id !== 'you2004-fig8d') jobs.push([id, 'igs']);
+  }
+  // Two at a time: the machine has two cores.
+  let next = 0;
+  const worker = async () => {
+    while (next < jobs.length) {
+      const [id, ext] = jobs[next++];
+      await exportAndReadBack(id, ext);
+    }
+  };
+  await Promise.all([worker(), worker()]);
+});
+
+test('a fit made worse than the tolerance fails the same read-back', async () => {
+  const file = join(dir, 'loose.step');
+  const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', file, '--tol', '1e-2', '--degree', '3'], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  const expect = join(dir, 'loose.expect.json');
+  writeFileSync(expect, JSON.stringify({ tolerance: 1e-6, faces: samples('you2004-fig4a', ['blend', 'cylinder', 'plane']) }));
+  const back = spawnSync(readback, [file, expect], { encoding: 'utf8' });
+  assert.equal(back.status, 1);
+  const report = JSON.parse(back.stdout);
+  assert.equal(report.valid, true);
+  assert.ok(report.faces.some((f) => f.maxDeviation > 1e-6), JSON.stringify(report.faces));
+});
+
+test('an unreachable tolerance names the patch and the deviation reached, and writes nothing', () => {
+  const file = join(dir, 'never.step');
+  const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', file, '--tol', '1e-300'], { encoding: 'utf8' });
+  assert.equal(r.status, 1);
+  assert.match(r.stderr, /TooLarge: patch 'blend': the fit reached a certified deviation of \S+ \(tolerance 1e-300\)/);
+  assert.equal(existsSync(file), false);
+  assert.deepEqual(readdirSync(dir).filter((f) => f.startsWith('never')), []);
+});
+
+test('a tolerance that is not a positive finite number, or a degree other than 3 or 5, is refused before any work', () => {
+  for (const bad of ['0', '-1', 'nan', 'inf', '1e-3x', '']) {
+    const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'bad.step'), '--tol', bad], { encoding: 'utf8' });
+    assert.equal(r.status, 1, bad);
+    assert.match(r.stderr, /--tol expects a positive finite number/);
+  }
+  const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'bad.step'), '--degree', '4'], { encoding: 'utf8' });
+  assert.match(r.stderr, /--degree expects 3 or 5/);
+  assert.equal(existsSync(join(dir, 'bad.step')), false);
+});
