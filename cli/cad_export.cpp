@@ -52,10 +52,11 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
                     f.surface.degreeU, f.surface.degreeV, f.surface.countU, f.surface.countV);
     } else {
       std::snprintf(line, sizeof line,
-                    "  %s: certified deviation %.3g (sampled %.3g), normals at the ends within %.2g deg, degree %dx%d, "
+                    "  %s: certified deviation %.3g (sampled %.3g), normals at the ends within %.2g deg%s, degree %dx%d, "
                     "poles %dx%d%s\n",
-                    f.surface.name.c_str(), r.deviation, r.sampledDeviation, r.normalDeviationDeg, f.surface.degreeU,
-                    f.surface.degreeV, f.surface.countU, f.surface.countV, r.creases ? ", knots at creases" : "");
+                    f.surface.name.c_str(), r.deviation, r.sampledDeviation, r.normalDeviationDeg,
+                    r.normalsMet ? "" : " (target 0.01 deg not reached)", f.surface.degreeU, f.surface.degreeV,
+                    f.surface.countU, f.surface.countV, r.creases ? ", knots at creases" : "");
     }
     out << line;
     faces.push_back(f.surface);

@@ -233,6 +233,9 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
     const long points = long(grid.u.size()) * long(grid.v.size());
     const int nsu = int(ub.size()) - 1, nsv = int(vb.size()) - 1;
     if (iter > kFitMaxIterations || nsu > kFitMaxSpans || nsv > kFitMaxSpans || points > kFitMaxGridPoints) {
+      // The tolerance is a promise; the normals' target is best effort: a fit within the
+      // tolerance is kept and reports the normals it reached (normalsMet false).
+      if (reached <= o.tolerance) break;
       throw Error(ErrorCode::TooLarge,
                   "the fit reached a certified deviation of " + number(reached) + " (tolerance " + number(o.tolerance) +
                       "), normals within " + number(rep.normalDeviationDeg) + "° (" + number(o.normalToleranceDeg) + "°)" +
@@ -369,8 +372,13 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
                      std::max({boundB[o][0].maxCoeff(), boundB[o][1].maxCoeff(), boundB[o][2].maxCoeff()}));
     const Certificate cert = certify(grid, S, tabulateSpline(b, grid.u, grid.v), boundS, boundB, rep.scale);
     const bool normalsMet = cert.normalDeg <= o.normalToleranceDeg;
-    if (cert.bound < reached || (cert.bound <= o.tolerance && normalsMet)) {
+    // Best so far: within the tolerance with the smallest normal deviation, else the smallest bound.
+    const bool better = cert.bound <= o.tolerance
+                            ? (reached > o.tolerance || cert.normalDeg < rep.normalDeviationDeg)
+                            : cert.bound < reached;
+    if (better) {
       reached = cert.bound;
+      rep.normalsMet = normalsMet;
       best = b;
       rep.deviation = cert.bound;
       rep.sampledDeviation = cert.sampled;
@@ -393,10 +401,12 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
         const bool normalMissed = !(cert.cellNormalDeg(i, j) <= o.normalToleranceDeg);
         if (cert.cell(i, j) <= o.tolerance && !normalMissed) continue;
         const int su = grid.uSpan[size_t(i)], sv = grid.vSpan[size_t(j)];
-        if (normalMissed || !(cert.cellSampled(i, j) <= o.tolerance / 2)) {
-          markU[size_t(su)] = markV[size_t(sv)] = true;
+        if (normalMissed) {
+          markU[size_t(su)] = markV[size_t(sv)] = true;  // normals: both directions' data matter
         } else if (markU[size_t(su)] || markV[size_t(sv)]) {
-          continue;  // refined anyway
+          continue;  // refined anyway where its own direction's residual says so
+        } else if (!(cert.cellSampled(i, j) <= o.tolerance / 2)) {
+          markU[size_t(su)] = markV[size_t(sv)] = true;
         } else if (cert.uDominant(i, j)) {
           finerU[size_t(su)] = true;
         } else {

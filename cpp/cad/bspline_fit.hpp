@@ -27,6 +27,7 @@ struct FitReport {
   double deviation = 0.0;         // certified: max |S - B| over the whole patch is at most this
   double sampledDeviation = 0.0;  // the largest |S - B| at the certificate's grid points
   double normalDeviationDeg = 0.0;  // the largest angle between S's and B's normals at the u-borders' grid points
+  bool normalsMet = true;         // normalDeviationDeg within FitOptions::normalToleranceDeg
   double scale = 0.0;             // the patch's bounding-box diagonal (from the grid)
   int iterations = 0;
   long gridPoints = 0;            // of the last certificate
@@ -42,7 +43,8 @@ constexpr long kFitMaxGridPoints = 1L << 20;
 constexpr int kFitMaxIterations = 24;
 
 // Throws Error(InvalidField) for a tolerance that is not positive and finite or a degree other
-// than 3 or 5, Error(TooLarge) naming the deviation reached when a limit stops the refinement,
+// than 3 or 5, Error(TooLarge) naming the deviation reached when a limit stops the refinement
+// short of the tolerance (short of the normals' target only, the fit is returned: normalsMet),
 // Error(NonFinite) when the surface is not finite on the grid.
 BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& options, FitReport* report);
 

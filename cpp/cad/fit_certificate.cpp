@@ -99,7 +99,7 @@ Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridP
     const Eigen::Vector3d ns = su.cross(sv), nb = bu.cross(bv);
     if (ns.norm() <= 1e-3 * su.norm() * sv.norm() || su.norm() <= 1e-2 * maxSu || sv.norm() <= 1e-2 * maxSv) return;
     angle(i, j) = std::atan2(ns.cross(nb).norm(), ns.dot(nb)) * 180.0 / M_PI;
-    if (std::getenv("PDESURF_FIT_TRACE") && angle(i, j) > 0.1)
+    if (std::getenv("PDESURF_FIT_TRACE") && angle(i, j) > 0.01)
       std::fprintf(stderr, "  normal %g at (%g, %g): |ns| %g |su| %g |sv| %g |nb| %g\n", angle(i, j), g.u[size_t(i)], g.v[size_t(j)], ns.norm(), su.norm(), sv.norm(), nb.norm());
   };
   for (Eigen::Index j = 0; j < mv; ++j) normalAt(0, j), normalAt(mu - 1, j);
