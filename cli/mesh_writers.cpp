@@ -22,7 +22,7 @@ MeshFormat parseMeshFormat(const std::string& name) {
   if (name == "stl") return MeshFormat::Stl;
   if (name == "ply") return MeshFormat::Ply;
   if (name == "glb") return MeshFormat::Glb;
-  throw std::runtime_error("unknown --format '" + oneLine(name) + "': expected obj, stl, ply or glb");
+  throw std::runtime_error("unknown --format '" + oneLine(name) + "': expected obj, stl, ply, glb, step, stp, iges or igs");
 }
 
 MeshFormat meshFormatFromPath(const std::string& path) {
