@@ -14,17 +14,14 @@
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 #include "surface/tabulation.hpp"
+#include "js_values.hpp"
 
 using emscripten::val;
 using namespace pdesurf;
+using pdesurf::wasm::copyOut;
+using pdesurf::wasm::failure;
 
 namespace {
-
-// A copy, not a view: views into the wasm heap go stale when the heap grows.
-template <class T>
-val copyOut(const std::vector<T>& v) {
-  return val(emscripten::typed_memory_view(v.size(), v.data())).call<val>("slice");
-}
 
 // Per coordinate: {order, params: {name: value}} with the scene's own names (s, t / b, c, d /
 // a / coefficients[k]), so the page can show and edit them.
@@ -108,16 +105,6 @@ void setBezierExtras(val& p, const SolvedPatch& sp) {
     }
   p.set("normalOrigins", copyOut(flatten(at)));
   p.set("normalVectors", copyOut(flatten(dir)));
-}
-
-val failure(const char* code, const std::string& message) {
-  val err = val::object();
-  err.set("code", std::string(code));
-  err.set("message", message);
-  val r = val::object();
-  r.set("ok", false);
-  r.set("error", err);
-  return r;
 }
 
 // The join certificate as plain data (docs/wasm-api.md); crossings, on a 48×48 mesh per patch,

@@ -52,7 +52,31 @@ export async function loadSolver(opts = {}) {
   return {
     module: Module,
     solve: (scene, grid = {}) => solveWith(Module, scene, grid),
+    exportCad: (scene, options = {}) => exportCadWith(Module, scene, options),
   };
+}
+
+// Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text
+// (docs/wasm-api.md, docs/cad-export.md): { tolerance, faces: [...], text? }.
+function exportCadWith(Module, scene, { format = 'faces', tolerance, degree } = {}) {
+  if (typeof Module.exportCad !== 'function') {
+    throw new PdesurfError('Load', 'this solver module has no exportCad: rebuild the wasm module');
+  }
+  const options = { format };
+  if (tolerance !== undefined) options.tolerance = tolerance;
+  if (degree !== undefined) options.degree = degree;
+  let res;
+  try {
+    res = Module.exportCad(sceneText(scene), options);
+  } catch (err) {
+    throw new PdesurfError('Internal', err instanceof Error ? err.message : `exportCad threw ${String(err)}`);
+  }
+  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', 'exportCad returned no result');
+  if (!res.ok) {
+    const e = res.error || {};
+    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown export error'));
+  }
+  return { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), text: res.text };
 }
 
 // The scene as JSON text, or a PdesurfError: JSON.stringify throws RangeError on a too deep

@@ -1,0 +1,87 @@
+// The certified B-spline export through the wasm module and the page's wrapper
+// (exportCad, docs/wasm-api.md): STEP and IGES text from the module read back by Open CASCADE
+// against the native CLI's own samples, the faces' plain data consistent (knots, poles,
+// deviations within the tolerance, the same figures as the CLI), bad options and unreachable
+// tolerances named errors.
+//   PDESURF_CLI=build/native/pdesurf PDESURF_BUILD_DIR=build node --test tests/js/wasm-cad.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join } from 'node:path';
+import { loadSolver, PdesurfError } from '../../web/solver/pdesurf-solver.js';
+
+const root = new URL('../../', import.meta.url);
+const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
+const solver = await loadSolver({
+  moduleUrl: new URL('pdesurf.js', wasmDir).href,
+  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
+});
+const cli = process.env.PDESURF_CLI ?? new URL('build/native/pdesurf', root).pathname;
+const readback = process.env.PDESURF_OCCT_READBACK ?? join(dirname(cli), 'tests/occt/occt_readback');
+const examplePath = (id) => new URL(`examples/${id}.json`, root).pathname;
+const scene = (id) => readFileSync(examplePath(id), 'utf8');
+const dir = mkdtempSync(join(tmpdir(), 'pdesurf-wasm-cad-'));
+
+function cliSamples(id, names) {
+  return names.map((name) => {
+    const r = spawnSync(cli, ['sample', examplePath(id), '--patch', name, '--grid', '9x13'], { encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    return { name, samples: r.stdout.trim().split('\n').slice(1).map((l) => l.split(',').map(Number)) };
+  });
+}
+
+// A Bézier example, a blend between closed borders, the fills of Fig. 8c.
+for (const id of ['you2004-fig4a', 'wu2015-fig1a', 'you2004-fig8c']) {
+  test(`${id}: the module's STEP and IGES read back in Open CASCADE within the tolerance of the native surfaces`, () => {
+    for (const format of ['step', 'iges']) {
+      const out = solver.exportCad(scene(id), { format });
+      assert.ok(out.tolerance > 0);
+      assert.ok(out.faces.length >= 2);
+      for (const f of out.faces) {
+        assert.equal(f.knotsU.length, f.countU + f.degreeU + 1);
+        assert.equal(f.knotsV.length, f.countV + f.degreeV + 1);
+        assert.equal(f.poles.length, 3 * f.countU * f.countV);
+        assert.ok(f.poles instanceof Float64Array && f.knotsU instanceof Float64Array);
+        assert.ok(f.deviation <= out.tolerance, `${f.name}: ${f.deviation} > ${out.tolerance}`);
+        assert.equal(f.degenerate.length, 4);
+      }
+      const file = join(dir, `${id}.${format === 'step' ? 'step' : 'igs'}`);
+      writeFileSync(file, out.text);
+      const expect = join(dir, `${id}.${format}.json`);
+      writeFileSync(expect, JSON.stringify({ tolerance: out.tolerance, faces: cliSamples(id, out.faces.map((f) => f.name)) }));
+      const back = spawnSync(readback, [file, expect], { encoding: 'utf8' });
+      assert.equal(back.status, 0, `${format}: ${back.stdout.slice(0, 600)} ${back.stderr.slice(0, 300)}`);
+    }
+  });
+}
+
+test('the module reports the same fit as the CLI: poles, deviations within 1e-6 relative', () => {
+  const out = solver.exportCad(scene('you2004-fig4a'));
+  const text = spawnSync(cli, ['export', examplePath('you2004-fig4a'), '-o', join(dir, 'cli.step')], { encoding: 'utf8' }).stdout;
+  for (const f of out.faces) {
+    const m = new RegExp(`^  ${f.name}: certified deviation (\\S+) .* poles (\\d+)x(\\d+)`, 'm').exec(text);
+    assert.ok(m, `${f.name} in: ${text}`);
+    assert.equal(f.countU, Number(m[2]));
+    assert.equal(f.countV, Number(m[3]));
+    assert.ok(Math.abs(f.deviation - Number(m[1])) <= 1e-2 * f.deviation + 1e-12, `${f.deviation} vs ${m[1]}`);
+  }
+});
+
+test('bad options and unreachable tolerances are named errors; the module keeps working', () => {
+  const bad = [
+    [{ tolerance: -1 }, /tolerance: must be a positive finite number/],
+    [{ tolerance: NaN }, /tolerance/],
+    [{ tolerance: 'tight' }, /tolerance/],
+    [{ degree: 4 }, /degree: must be 3 or 5/],
+    [{ format: 'dxf' }, /format: must be "step", "iges" or "faces"/],
+  ];
+  for (const [options, message] of bad) {
+    assert.throws(() => solver.exportCad(scene('you2004-fig4a'), options), (e) => e instanceof PdesurfError && e.code === 'InvalidField' && message.test(e.message));
+  }
+  assert.throws(() => solver.exportCad(scene('you2004-fig4a'), { tolerance: 1e-300 }),
+    (e) => e instanceof PdesurfError && e.code === 'TooLarge' && /patch 'blend': the fit reached a certified deviation of/.test(e.message));
+  assert.throws(() => solver.exportCad('{"format": "pdesurf-scene"'), (e) => e instanceof PdesurfError && e.code === 'ParseError');
+  assert.equal(solver.exportCad(scene('you2004-fig4a'), { format: 'step', degree: 3, tolerance: 1e-4 }).faces.length, 3);
+});

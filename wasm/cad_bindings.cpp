@@ -1,0 +1,109 @@
+// exportCad(sceneJson, options): every patch as a certified B-spline face (cpp/cad/), and the
+// STEP or IGES text of them, as plain data (docs/wasm-api.md). The page runs it in its worker;
+// the faces also feed the .3dm writer (web/cad/). No exception crosses into JS.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cmath>
+#include <new>
+
+#include "cad/iges_writer.hpp"
+#include "cad/scene_fit.hpp"
+#include "cad/step_writer.hpp"
+#include "common/errors.hpp"
+#include "js_values.hpp"
+#include "scene/scene.hpp"
+
+using emscripten::val;
+using namespace pdesurf;
+using pdesurf::wasm::copyOut;
+using pdesurf::wasm::failure;
+
+namespace {
+
+val faceOf(const PatchFit& f) {
+  const BSplineSurface& s = f.surface;
+  val o = val::object();
+  o.set("name", s.name);
+  o.set("degreeU", s.degreeU);
+  o.set("degreeV", s.degreeV);
+  o.set("countU", s.countU);
+  o.set("countV", s.countV);
+  o.set("knotsU", copyOut(s.knotsU));
+  o.set("knotsV", copyOut(s.knotsV));
+  std::vector<double> poles;
+  poles.reserve(s.poles.size() * 3);
+  for (const Eigen::Vector3d& p : s.poles) poles.insert(poles.end(), {p.x(), p.y(), p.z()});
+  o.set("poles", copyOut(poles));
+  o.set("closedV", s.closedV);
+  val degenerate = val::array();
+  for (bool d : s.degenerate) degenerate.call<void>("push", d);
+  o.set("degenerate", degenerate);
+  o.set("exact", f.report.exact);
+  o.set("deviation", f.report.deviation);
+  o.set("sampledDeviation", f.report.sampledDeviation);
+  o.set("normalDeviationDeg", f.report.normalDeviationDeg);
+  o.set("normalsMet", f.report.normalsMet);
+  return o;
+}
+
+// options: {format: "step" | "iges" | "faces", tolerance: number (absolute; absent or 0: the
+// default, 1e-6 of the scene's diagonal), degree: 3 | 5}.
+val exportCad(const std::string& sceneJson, val options) {
+  try {
+    const bool isObject = !options.isUndefined() && !options.isNull() && options.typeOf().as<std::string>() == "object";
+    std::string format = "faces";
+    SceneFitOptions fit;
+    if (isObject) {
+      const val f = options["format"], t = options["tolerance"], d = options["degree"];
+      if (!f.isUndefined()) {
+        if (f.typeOf().as<std::string>() != "string") throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\" or \"faces\"");
+        format = f.as<std::string>();
+        if (format != "step" && format != "iges" && format != "faces")
+          throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\" or \"faces\"");
+      }
+      if (!t.isUndefined()) {
+        if (t.typeOf().as<std::string>() != "number" || !(t.as<double>() >= 0) || !std::isfinite(t.as<double>()))
+          throw Error(ErrorCode::InvalidField, "tolerance: must be a positive finite number (0 or absent: the default)");
+        fit.tolerance = t.as<double>();
+      }
+      if (!d.isUndefined()) {
+        if (d.typeOf().as<std::string>() != "number" || (d.as<double>() != 3 && d.as<double>() != 5))
+          throw Error(ErrorCode::InvalidField, "degree: must be 3 or 5");
+        fit.degree = int(d.as<double>());
+      }
+    }
+    const Scene scene = parseScene(sceneJson);
+    const auto solved = solveScene(scene);
+    double tolerance = 0;
+    const std::vector<PatchFit> fits = fitScene(solved, fit, &tolerance);
+    val faces = val::array();
+    std::vector<BSplineSurface> surfaces;
+    for (const PatchFit& f : fits) {
+      faces.call<void>("push", faceOf(f));
+      surfaces.push_back(f.surface);
+    }
+    val r = val::object();
+    r.set("ok", true);
+    r.set("title", scene.title);
+    r.set("tolerance", tolerance);
+    r.set("faces", faces);
+    if (format != "faces") {
+      CadFileInfo info;
+      info.title = scene.title;
+      info.tolerance = tolerance;
+      r.set("text", format == "step" ? writeStep(surfaces, info) : writeIges(surfaces, info));
+    }
+    return r;
+  } catch (const Error& e) {
+    return failure(errorCodeName(e.code()), e.what());
+  } catch (const std::bad_alloc&) {
+    return failure("Internal", "out of memory: try a larger tolerance");
+  } catch (const std::exception& e) {
+    return failure("Internal", e.what());
+  }
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(pdesurf_cad) { emscripten::function("exportCad", &exportCad); }
