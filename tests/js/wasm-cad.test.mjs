@@ -38,7 +38,7 @@ for (const id of ['you2004-fig4a', 'wu2015-fig1a', 'you2004-fig8c']) {
     for (const format of ['step', 'iges']) {
       const out = solver.exportCad(scene(id), { format });
       assert.ok(out.tolerance > 0);
-      assert.ok(out.faces.length >= 2);
+      assert.ok(out.faces.length >= 1);
       for (const f of out.faces) {
         assert.equal(f.knotsU.length, f.countU + f.degreeU + 1);
         assert.equal(f.knotsV.length, f.countV + f.degreeV + 1);
