@@ -13,6 +13,7 @@
 #include "bezier/bernstein.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "common/errors.hpp"
+#include "test_util.hpp"
 
 using namespace pdesurf;
 
@@ -121,7 +122,9 @@ Eigen::Matrix<LD, 3, 1> point(const Net& net, int n, LD u, LD v) {
 TEST_CASE("bezier degree 16: a membrane with γ = 1e4 and a net in the thousands is solved, as a long-double solve gives it") {
   // γ = 100 goes through the Bernstein factorisation (its pivots pass), γ ≥ 1e4 through the
   // fallback: both measured against the same reference.
-  for (double gamma : {100.0, 1e4, 1e6}) {
+  // Under AddressSanitizer both paths once (the long-double reference is most of the time).
+  const std::vector<double> gammas = testing::kTimeScale > 1 ? std::vector<double>{100.0, 1e4} : std::vector<double>{100.0, 1e4, 1e6};
+  for (double gamma : gammas) {
     CAPTURE(gamma);
     const BezierProblem p = degree16(1, gamma);
     const BezierSolver solver(p);  // threw Singular before the fallback
