@@ -1,8 +1,9 @@
 #!/usr/bin/env node
 // The production page: web/ bundled and minified by esbuild (three.js tree-shaken) into
-// build/web/ (served as /app/), the wasm module's files beside their build, and every text
-// or wasm file precompressed (FILE.br, FILE.gz) for the static server. The sources in web/
-// stay runnable as they are (/web/, no build step).
+// build/web/ (served as /app/), the wasm module's files beside their build, rhino3dm's ES
+// module and wasm in build/web/rhino3dm/ (the .3dm writer's, fetched on first export only),
+// and every text or wasm file precompressed (FILE.br, FILE.gz) for the static server. The
+// sources in web/ stay runnable as they are (/web/, no build step).
 //   node scripts/build-web.mjs [--wasm-dir build/wasm] [--out build/web]
 import fs from 'node:fs';
 import path from 'node:path';
@@ -21,11 +22,30 @@ const WASM = arg('--wasm-dir', process.env.PDESURF_WASM_DIR || path.join(ROOT, '
 fs.rmSync(OUT, { recursive: true, force: true });
 fs.mkdirSync(OUT, { recursive: true });
 
-// Two bundles: the page, and the solver worker it starts (new URL('./solver-worker.js',
-// import.meta.url) resolves beside the page's bundle). The wasm glue (/wasm/pdesurf.js) is
-// imported at run time and stays a file of its own.
+// rhino3dm is not bundled (2.7 MB of wasm and its glue, loaded on first .3dm export): its two
+// files are copied to rhino3dm/ beside the bundle, and web/cad/rhino3dm-url.js, which names
+// the copy under node_modules/ for the sources, is swapped for one naming that copy.
+const RHINO3DM_FILES = ['rhino3dm.module.min.js', 'rhino3dm.wasm'];
+const rhino3dmUrl = {
+  name: 'rhino3dm-url',
+  setup(build) {
+    build.onLoad({ filter: /[\\/]web[\\/]cad[\\/]rhino3dm-url\.js$/ }, () => ({
+      contents: "export const RHINO3DM_URL = new URL('./rhino3dm/rhino3dm.module.min.js', import.meta.url).href;",
+    }));
+  },
+};
+
+// Three bundles: the page, the solver worker it starts (new URL('./solver-worker.js',
+// import.meta.url) resolves beside the page's bundle), and the .3dm writer's worker
+// (web/cad/export-3dm.js starts ./rhino-worker.js the same way). The wasm glue
+// (/wasm/pdesurf.js) is imported at run time and stays a file of its own.
 const result = await esbuild.build({
-  entryPoints: { main: path.join(ROOT, 'web', 'main.js'), 'solver-worker': path.join(ROOT, 'web', 'solver', 'solver-worker.js') },
+  entryPoints: {
+    main: path.join(ROOT, 'web', 'main.js'),
+    'solver-worker': path.join(ROOT, 'web', 'solver', 'solver-worker.js'),
+    'rhino-worker': path.join(ROOT, 'web', 'cad', 'rhino-worker.js'),
+  },
+  plugins: [rhino3dmUrl],
   outdir: OUT,
   bundle: true,
   format: 'esm',
@@ -55,6 +75,9 @@ html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./s
 if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');
 fs.writeFileSync(path.join(OUT, 'index.html'), html);
 for (const f of ['style.css', 'panel.css', 'load-check.js', 'boot.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
+const RHINO3DM = path.join(ROOT, 'node_modules', 'rhino3dm');
+fs.mkdirSync(path.join(OUT, 'rhino3dm'));
+for (const f of RHINO3DM_FILES) fs.copyFileSync(path.join(RHINO3DM, f), path.join(OUT, 'rhino3dm', f));
 
 // Precompressed siblings: brotli at its best (built once), gzip for clients without it.
 const compress = (file) => {
@@ -70,10 +93,8 @@ for (const f of ['pdesurf.js', 'pdesurf.wasm']) {
   if (fs.existsSync(file)) sizes.push(compress(file));
   else console.warn(`build-web: ${file} is missing (build the wasm module first)`);
 }
-let raw = 0, br = 0;
-for (const s of sizes) {
-  raw += s.raw;
-  br += s.br;
-}
-console.log(`build-web: ${path.relative(ROOT, OUT)}/ written; ${sizes.length} files, ${(raw / 1024).toFixed(0)} KiB, ${(br / 1024).toFixed(0)} KiB brotli` +
-  ` (${Object.keys(result.metafile.outputs).length} bundle outputs)`);
+// rhino3dm's files apart: they are not part of what the page loads.
+const rhino = RHINO3DM_FILES.map((f) => compress(path.join(OUT, 'rhino3dm', f)));
+const kib = (list, key) => (list.reduce((sum, s) => sum + s[key], 0) / 1024).toFixed(0);
+console.log(`build-web: ${path.relative(ROOT, OUT)}/ written; ${sizes.length} files, ${kib(sizes, 'raw')} KiB, ${kib(sizes, 'br')} KiB brotli` +
+  ` (${Object.keys(result.metafile.outputs).length} bundle outputs); rhino3dm/ on first .3dm export: ${kib(rhino, 'raw')} KiB, ${kib(rhino, 'br')} KiB brotli`);

@@ -1,10 +1,10 @@
 #!/usr/bin/env node
 // Tiny static server for the pdesurf modeller: serves only what the page needs (the
 // production build build/web/ as /app/, the sources web/ as /web/, examples/,
-// node_modules/three/ and /pako/, and as /wasm/ the .js and .wasm files of build/wasm/ or
-// $PDESURF_WASM_DIR), every response with security headers (a CSP that allows no inline
-// script but the importmap), compressed when the client accepts it (lib/encoded-body.mjs),
-// with an ETag.
+// node_modules/three/, /pako/ and /rhino3dm/, and as /wasm/ the .js and .wasm files of
+// build/wasm/ or $PDESURF_WASM_DIR), every response with security headers (a CSP that allows
+// no inline script but the importmap, and eval only in the .3dm writer's worker), compressed
+// when the client accepts it (lib/encoded-body.mjs), with an ETag.
 // No dependencies, so it runs on a fresh checkout.
 //   node scripts/static-server.mjs [--port 8000] [--host 127.0.0.1]
 import crypto from 'node:crypto';
@@ -40,9 +40,9 @@ function sendText(res, status, text, extraHeaders = {}) {
 }
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
-// examples it fetches, the docs its help links, and the npm packages its importmap names
-// (pako: the link decoder).
-const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako']];
+// examples it fetches, the docs its help links, and the npm packages it loads (pako: the
+// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js).
+const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako'], ['node_modules', 'rhino3dm']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
 const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;
@@ -61,6 +61,15 @@ function contentSecurityPolicy(importmapHashes) {
     "base-uri 'none'", "frame-ancestors 'none'", "form-action 'none'",
   ].join('; ');
 }
+
+// The .3dm writer's worker (web/cad/rhino-worker.js, bundled as /app/rhino-worker.js) runs
+// rhino3dm, whose embind glue needs eval. A worker takes the policy sent with its own script,
+// so eval is allowed there only: no DOM, no inline script, the same origin for the rest.
+const EVAL_WORKERS = new Set(['/web/cad/rhino-worker.js', '/app/rhino-worker.js']);
+const EVAL_WORKER_POLICY = [
+  "default-src 'self'", "script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'", "connect-src 'self'",
+  "object-src 'none'", "base-uri 'none'",
+].join('; ');
 
 // sha256 (base64) of each inline importmap in `html`, as the browser hashes it: the text
 // between the tags with newlines normalised to LF (the HTML parser does that first).
@@ -153,6 +162,7 @@ async function serve(req, res, root, wasmDir, appDir) {
     sendText(res, 403, 'forbidden');
     return;
   }
+  if (EVAL_WORKERS.has(urlPath)) res.setHeader('Content-Security-Policy', EVAL_WORKER_POLICY);
   const mapped = mapPath(urlPath, root, wasmDir, appDir);
   let found = mapped && (await inside(mapped.base, path.join(mapped.base, ...mapped.rest)));
   if (found?.st.isDirectory() && mapped.dirs) {

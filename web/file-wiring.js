@@ -1,4 +1,5 @@
-// Wiring of the "File" folder: exports (scene JSON, OBJ, STL, GLB, PNG; web/export/) and
+// Wiring of the "File" folder: exports (scene JSON, OBJ, STL, GLB, PNG, and STEP, IGES, 3dm
+// fitted in the solver's worker; web/export/) and
 // opening a scene file by the picker or by dropping it on the page (web/import/). A file
 // that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
 // surfaces, the panel, the example id and the URL hash. For the second case the scene shown
@@ -14,20 +15,23 @@ import { messageOf } from './state/document.js';
 const meshExport = () => import('./export/mesh-export.js');
 const pngExport = () => import('./export/png-export.js');
 const sceneExport = () => import('./export/scene-export.js');
+const cadExport = () => import('./export/cad-export.js');
+const CAD_LABELS = { step: 'STEP', iges: 'IGES', '3dm': '3dm' };
 const sceneFile = () => import('./import/scene-file.js');
 
 const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
 
 /**
- * { panel, viewer, state, status, hooks, showScene(scene, opts) -> token (main.js),
+ * { panel, viewer, state, status, hooks, solver (solver/solver-client.js: CAD exports run in
+ *   its worker), showScene(scene, opts) -> token (main.js),
  *   currentTitle() -> the title line's text, setNotice(text) (shown instead of the next
  *   solve's summary) }.
  * Returns { solved(job) -> true for the first good solve of an opened file (its scene is
  * then linked in the hash like an edit), failed(err, job) -> true when the failure was an
  * opened file's (handled here) }.
  */
-export function createFileWiring({ panel, viewer, state, status, hooks, showScene, currentTitle, setNotice }) {
+export function createFileWiring({ panel, viewer, state, status, hooks, solver, showScene, currentTitle, setNotice }) {
   let pending = null; // { token, name, previous }: an opened file's scene waiting for its first solve
   let busy = false; // one export at a time
 
@@ -62,28 +66,48 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     hooks.lastFile = { action: 'open', name, error: null };
   }
 
-  async function exportWith(action, make) {
+  // make() -> { data, name, type, note? (a warning for the status line), record? (more for
+  // hooks.lastFile) }; said(text, kind): where else the outcome goes (the CAD line).
+  async function exportWith(action, make, { label = action.toUpperCase(), said = () => {} } = {}) {
     if (busy) return;
     busy = true;
     const t0 = performance.now();
     try {
       // A large OBJ takes a second on the page's thread: say so before it starts.
-      status.info(`exporting ${action.toUpperCase()}…`);
+      status.info(`exporting ${label}…`);
       await nextPaint();
-      const { data, name, type, note } = await make();
+      const { data, name, type, note, record } = await make();
       const bytes = downloadFile(data, name, type);
       const ms = performance.now() - t0;
-      hooks.lastFile = { action, name, bytes, ms };
+      hooks.lastFile = { action, name, bytes, ms, ...record };
       const line = `saved ${name} (${sizeText(bytes)})`;
       if (note) status.warn(`${line}; ${note}`);
       else status.info(line);
     } catch (err) {
-      const msg = `cannot export ${action.toUpperCase()}: ${messageOf(err)}`;
+      const msg = `cannot export ${label}: ${messageOf(err)}`;
       hooks.lastFile = { action, error: msg };
       status.error(msg);
+      said(msg, 'error');
     } finally {
       busy = false;
     }
+  }
+
+  // format: step, iges or 3dm; toleranceText: the folder's field (blank: the default).
+  function cadFile(format, toleranceText) {
+    const label = CAD_LABELS[format];
+    const said = (text, kind) => fileFolder.sayCad(text, kind);
+    return exportWith(format, async () => {
+      if (!state.scene) throw new Error('no scene is open');
+      const cad = await cadExport();
+      const tolerance = cad.parseTolerance(toleranceText);
+      said(`fitting ${label}…`);
+      const file = await cad.cadFile({ solver, sceneText: state.text(), format, tolerance, base: baseName() });
+      const summary = cad.fitSummary(format, file.fit);
+      said(summary.text, summary.missed.length ? 'warn' : null);
+      const note = summary.missed.length ? `normals target not reached on ${summary.missed.join(', ')}` : null;
+      return { ...file, note, record: cad.fitRecord(file.fit) };
+    }, { label, said });
   }
 
   // action: obj, stl or glb; run(module of export/mesh-export.js, surfaces) -> file data.
@@ -96,7 +120,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
 
   const picker = createFilePicker(openFile);
   installFileDrop(openFile);
-  const { folder } = buildFileFolder(panel.gui, {
+  const fileFolder = buildFileFolder(panel.gui, {
     open: () => picker.open(),
     json: () => exportWith('json', async () => {
       if (!state.scene) throw new Error('no scene is open');
@@ -106,6 +130,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
     obj: meshFile('obj', (m, s) => m.exportObj(s), 'model/obj'),
     stl: meshFile('stl', (m, s) => m.exportStl(s), 'model/stl'),
     glb: meshFile('glb', (m, s) => m.exportGlb(s, baseName()), 'model/gltf-binary'),
+    cad: cadFile,
     png: ({ scale, transparent }) => exportWith('png', async () => {
       const { scene } = viewer.sceneGraph();
       const { renderPng } = await pngExport();
@@ -115,7 +140,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, showScen
       return { data: png.blob, name: pngFileName(baseName(), png.scale), type: 'image/png', note };
     }),
   });
-  panel.keepAfterShare(folder);
+  panel.keepAfterShare(fileFolder.folder);
 
   return {
     solved(job) {

@@ -113,7 +113,7 @@ async function start() {
 
   bezier.connect({ state, viewer, panel, doc, status });
   share = createShareWiring({ viewer, panel, status, hooks });
-  const files = createFileWiring({ panel, viewer, state, status, hooks, showScene: session.showScene,
+  const files = createFileWiring({ panel, viewer, state, status, hooks, solver, showScene: session.showScene,
     currentTitle: () => titleEl.textContent, setNotice: session.setNotice });
   createBuildWiring({ doc, panel, viewer, hooks, openBuilt: session.openBuilt });
   analysis = createAnalysisWiring({ doc, panel, viewer, hasAnalysis: true, requestSolve: session.requestQuiet });

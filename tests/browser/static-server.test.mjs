@@ -55,6 +55,10 @@ describe('static server', () => {
       put(path.join(root, f), 'outside the root');
     }
     put(path.join(wasm, 'CMakeCache.txt'), 'outside the root');
+    // The .3dm writer's worker (sources and build) and the package it loads.
+    put(path.join(root, 'web', 'cad', 'rhino-worker.js'), 'export {};');
+    put(path.join(root, 'build', 'web', 'rhino-worker.js'), 'export {};');
+    put(path.join(root, 'node_modules', 'rhino3dm', 'rhino3dm.wasm'), Buffer.from([0, 0x61, 0x73, 0x6d, 1, 0, 0, 0]));
     // node_modules itself a symlink (as in a git worktree): three/ is still its real tree.
     put(path.join(tmp, 'nm', 'three', 'build', 'three.module.js'), 'export {};');
     fs.symlinkSync(path.join(tmp, 'nm'), path.join(root, 'node_modules', 'three-link'));
@@ -111,9 +115,9 @@ describe('static server', () => {
     }
   });
 
-  it('serves the page, the examples, the wasm module and three, and nothing else', async () => {
+  it('serves the page, the examples, the wasm module, three and rhino3dm, and nothing else', async () => {
     for (const p of ['/web/b.js', '/examples/data.json', '/docs/page.md', '/wasm/pdesurf.wasm',
-      '/node_modules/three/build/three.module.js']) {
+      '/node_modules/three/build/three.module.js', '/node_modules/rhino3dm/rhino3dm.wasm']) {
       assert.equal((await get(port, p)).status, 200, p);
     }
     for (const p of ['/.git/HEAD', '/.git/', '/build/wasm/pdesurf.js', '/package.json', '/cpp/core.cpp', '/cpp/',
@@ -160,6 +164,22 @@ describe('static server', () => {
     assert.match(csp, /(^|; )object-src 'none'(;|$)/);
     assert.match(csp, /(^|; )frame-ancestors 'none'(;|$)/);
     assert.doesNotMatch(csp, /script-src[^;]*'unsafe-inline'/);
+  });
+
+  it('allows eval in the .3dm writer\'s worker only', async () => {
+    const policy = async (p) => {
+      const r = await get(port, p);
+      assert.equal(r.status, 200, p);
+      return r.headers['content-security-policy'];
+    };
+    for (const p of ['/web/cad/rhino-worker.js', '/app/rhino-worker.js']) {
+      const csp = await policy(p);
+      assert.match(csp, /(^|; )script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'(;|$)/, p);
+      assert.match(csp, /(^|; )default-src 'self'(;|$)/, p);
+      assert.doesNotMatch(csp, /'unsafe-inline'/, p);
+    }
+    for (const p of ['/web/', '/web/a.js', '/node_modules/rhino3dm/rhino3dm.wasm']) assert.doesNotMatch(await policy(p), /'unsafe-eval'/, p);
+    assert.equal((await get(port, '/node_modules/rhino3dm/rhino3dm.wasm')).headers['content-type'], 'application/wasm');
   });
 
   it('allows the importmap by its hash, recomputed when index.html changes', async () => {

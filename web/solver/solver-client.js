@@ -7,6 +7,11 @@
 //                  the newest request's is stale and dropped (another scene was opened).
 //   .busy()        true while a solve runs
 //   .restarts      how many solves were cancelled (for tests)
+//   .exportCad(scene (text), { format, tolerance }) -> promise of the module's exportCad
+//                  result ({ title, tolerance, faces, text? }, plus ms: the worker's time), or
+//                  an Error with the core's code. One at a time; it runs between solves, never
+//                  beside one (the worker is one thread): a solve asked for meanwhile waits
+//                  for it, and no waiting edit cancels it.
 
 // A waiting edit cancels the running solve after this long, or after 1.5 times the last
 // solve's time if that is longer: a scene that always takes a second still shows a result
@@ -19,6 +24,8 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let worker = null;
   let running = null; // { id, job, started }
   let waiting = null; // { job, since }
+  let exporting = null; // { id, resolve, reject }: a CAD export in the worker
+  let exportWaiting = null; // { scene, options, resolve, reject }: one asked for during a solve
   let nextId = 1;
   let lastMs = 0;
   let latestToken = null;
@@ -37,10 +44,13 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     worker.onerror = (e) => {
       e.preventDefault();
       const job = running?.job;
+      const error = { code: 'Load', message: `the solver worker failed: ${e.message || 'unknown error'}` };
       stopRunning();
       worker.terminate();
       worker = null;
-      if (job) onError({ code: 'Load', message: `the solver worker failed: ${e.message || 'unknown error'}` }, job);
+      if (job) onError(error, job);
+      if (exporting) exporting.reject(failure(error));
+      exporting = null;
       next();
     };
   }
@@ -62,16 +72,43 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     }, BUSY_AFTER_MS);
   }
 
+  function dispatchExport({ scene, options, resolve, reject }) {
+    if (!worker) spawn();
+    exporting = { id: nextId++, resolve, reject };
+    worker.postMessage({ id: exporting.id, kind: 'exportCad', scene, options });
+  }
+
+  // An export asked for goes first: it is one click, where waiting solves are coalesced edits.
   function next() {
     clearTimeout(cancelTimer);
     cancelTimer = 0;
-    if (!waiting || running) return;
+    if (running || exporting) return;
+    if (exportWaiting) {
+      const req = exportWaiting;
+      exportWaiting = null;
+      dispatchExport(req);
+      return;
+    }
+    if (!waiting) return;
     const { job } = waiting;
     waiting = null;
     dispatch(job);
   }
 
+  function exported(msg) {
+    if (!exporting || msg.id !== exporting.id) return;
+    const { resolve, reject } = exporting;
+    exporting = null;
+    if (msg.ok) resolve({ ...msg.result, ms: msg.ms });
+    else reject(failure(msg.error));
+    next();
+  }
+
   function finished(msg) {
+    if (msg.kind === 'exportCad') {
+      exported(msg);
+      return;
+    }
     if (!running || msg.id !== running.id) return;
     const { job } = running;
     lastMs = msg.ms;
@@ -97,14 +134,28 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
 
   client.request = (job) => {
     latestToken = job.token;
-    if (!running) {
+    if (!running && !exporting) {
       dispatch(job);
       return;
     }
     if (!waiting) waiting = { job, since: performance.now() };
     else waiting.job = job; // coalesce: only the newest waiting request will run
-    if (!cancelTimer) cancelTimer = setTimeout(cancelIfStuck, Math.max(CANCEL_AFTER_MS, 1.5 * lastMs));
+    if (running && !cancelTimer) cancelTimer = setTimeout(cancelIfStuck, Math.max(CANCEL_AFTER_MS, 1.5 * lastMs));
   };
   client.busy = () => running !== null;
+  client.exportCad = (scene, options) => new Promise((resolve, reject) => {
+    if (exporting || exportWaiting) {
+      reject(new Error('another CAD export is running'));
+      return;
+    }
+    const req = { scene, options, resolve, reject };
+    if (running) exportWaiting = req; // after this solve (next())
+    else dispatchExport(req);
+  });
   return client;
+}
+
+// The worker's { code, message } as an Error (messageOf in state/document.js shows both).
+function failure({ code, message }) {
+  return Object.assign(new Error(message), { code });
 }

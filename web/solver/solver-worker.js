@@ -3,6 +3,10 @@
 //   in:  { id, scene (JSON text), options: { nu, nv, curvature, joins, crossings } }
 //   out: { id, ok: true, result, ms } with every typed array transferred (moved, not copied),
 //        or { id, ok: false, error: { code, message }, ms }
+// A CAD export (the File folder's STEP, IGES, 3dm; docs/wasm-api.md, exportCad):
+//   in:  { id, kind: 'exportCad', scene, options: { format, tolerance } }
+//   out: { id, kind: 'exportCad', ok: true, result: { title, tolerance, faces, text? }, ms }
+//        with the faces' knots and poles transferred, or the same failure as a solve
 // uvs and indices are never sent: they depend on the grid alone and the page builds them
 // (viewer/grid-topology.js).
 import { loadSolver } from './pdesurf-solver.js';
@@ -36,22 +40,35 @@ ready.then((solver) => {
   }
 }, () => {});
 
-function transferablesOf(result) {
+// patches of a solve, faces of a CAD export: their typed arrays' buffers.
+function transferablesOf(items) {
   const buffers = new Set();
-  for (const p of result.patches)
+  for (const p of items)
     for (const v of Object.values(p)) if (ArrayBuffer.isView(v)) buffers.add(v.buffer);
   return [...buffers];
 }
 
+const run = {
+  solve: (solver, scene, options) => {
+    const result = solver.solve(scene, { ...options, topology: false });
+    return [result, transferablesOf(result.patches)];
+  },
+  exportCad: (solver, scene, { format, tolerance }) => {
+    const result = solver.exportCad(scene, { format, tolerance });
+    return [result, transferablesOf(result.faces)];
+  },
+};
+
 self.onmessage = async (event) => {
-  const { id, scene, options } = event.data;
+  const { id, kind = 'solve', scene, options } = event.data;
   const t0 = performance.now();
   try {
     const solver = await ready;
-    const result = solver.solve(scene, { ...options, topology: false });
-    self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transferablesOf(result));
+    if (!Object.hasOwn(run, kind)) throw new Error(`unknown request ${JSON.stringify(kind)}`);
+    const [result, transfer] = run[kind](solver, scene, options);
+    self.postMessage({ id, kind, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (err) {
     const error = { code: String(err?.code || 'Internal'), message: String(err?.message || err) };
-    self.postMessage({ id, ok: false, error, ms: performance.now() - t0 });
+    self.postMessage({ id, kind, ok: false, error, ms: performance.now() - t0 });
   }
 };

@@ -1,19 +1,24 @@
-// The "File" folder: open a scene file, and export the scene (JSON), the patches (OBJ, STL,
-// GLB) and the view (PNG at 1×, 2× or 4× the canvas, optionally transparent). Names go
-// through escapeHtml (lil-gui writes them as markup). DOM hooks: data-file="open" | "json" |
-// "obj" | "stl" | "glb" | "png" | "png-scale" | "png-transparent".
+// The "File" folder: open a scene file, and export the scene (JSON), the patches as meshes
+// (OBJ, STL, GLB) or as certified B-spline faces for CAD (STEP, IGES, 3dm, at a tolerance
+// typed here; empty: the core's default) and the view (PNG at 1×, 2× or 4× the canvas,
+// optionally transparent). Names go through escapeHtml (lil-gui writes them as markup); the
+// CAD line under the buttons is written with textContent only. DOM hooks: data-file="open" |
+// "json" | "obj" | "stl" | "glb" | "cad-tolerance" | "step" | "iges" | "3dm" | "cad-message" |
+// "png" | "png-scale" | "png-transparent".
 import { escapeHtml } from './html-text.js';
 
 export const PNG_SCALES = { '1×': 1, '2×': 2, '4×': 4 };
 
 /**
- * handlers: { open(), json(), obj(), stl(), glb(), png({ scale, transparent }) }.
- * Returns { folder (its element) }.
+ * handlers: { open(), json(), obj(), stl(), glb(), cad(format, toleranceText) with format
+ * 'step' | 'iges' | '3dm', png({ scale, transparent }) }.
+ * Returns { folder (its element), sayCad(text, kind) (the CAD line: kind null, 'warn' or 'error') }.
  */
 export function buildFileFolder(gui, handlers) {
   const folder = gui.addFolder('File');
   folder.domElement.dataset.folder = 'file';
   const png = { scale: 1, transparent: false };
+  const cad = { tolerance: '' };
   const actions = {
     open: () => handlers.open(),
     json: () => handlers.json(),
@@ -33,10 +38,65 @@ export function buildFileFolder(gui, handlers) {
   button('obj', 'export OBJ', 'the patches as a Wavefront OBJ mesh (one object per patch)');
   button('stl', 'export STL', 'the patches as a binary STL mesh');
   button('glb', 'export GLB', 'the patches as glTF 2.0 (binary), one node per patch');
+  const tol = folder.add(cad, 'tolerance').name(escapeHtml('CAD tolerance'));
+  tol.domElement.dataset.file = 'cad-tolerance';
+  tol.domElement.title = 'the largest distance allowed between a patch and its B-spline face, in scene units (e.g. 1e-4); empty: 1e-6 of the scene\'s diagonal';
+  tol.$input.placeholder = 'default';
+  tol.$input.inputMode = 'decimal';
+  tol.$input.spellcheck = false;
+  folder.$children.append(cadRow((format) => handlers.cad(format, cad.tolerance)));
+  // What the last CAD export achieved, or why it failed: text only (patch names come from links).
+  const message = document.createElement('div');
+  message.className = 'cad-message';
+  message.dataset.file = 'cad-message';
+  message.setAttribute('role', 'status');
+  message.hidden = true;
+  folder.$children.append(message);
   const labels = Object.fromEntries(Object.entries(PNG_SCALES).map(([k, v]) => [escapeHtml(k), v]));
   folder.add(png, 'scale', labels).name(escapeHtml('PNG size')).domElement.dataset.file = 'png-scale';
   folder.add(png, 'transparent').name(escapeHtml('PNG transparent')).domElement.dataset.file = 'png-transparent';
   button('png', 'export PNG', 'the view as a PNG image, at the chosen multiple of the canvas size');
   folder.close();
-  return { folder: folder.domElement };
+  return {
+    folder: folder.domElement,
+    sayCad(text, kind = null) {
+      message.textContent = text;
+      message.hidden = !text;
+      message.classList.toggle('warn', kind === 'warn');
+      message.classList.toggle('error', kind === 'error');
+    },
+  };
+}
+
+const CAD_BUTTONS = [
+  ['step', 'STEP', 'every patch as a certified B-spline face in a STEP file (AP214)'],
+  ['iges', 'IGES', 'every patch as a certified B-spline surface in an IGES file (type 128)'],
+  ['3dm', '3dm', 'every patch as a certified NURBS surface in a Rhino .3dm file (loads rhino3dm, 0.8 MB, on first use)'],
+];
+
+// "export CAD [STEP] [IGES] [3dm]": one row in lil-gui's own classes (a row per format took the
+// folder past the sheet of a phone with touch-sized rows). Each button is "export FORMAT" to
+// assistive technology; built with textContent only.
+function cadRow(onExport) {
+  const row = document.createElement('div');
+  row.className = 'controller cad-export';
+  const name = document.createElement('div');
+  name.className = 'name';
+  name.textContent = 'export CAD';
+  const widget = document.createElement('div');
+  widget.className = 'widget';
+  for (const [key, label, title] of CAD_BUTTONS) {
+    const slot = document.createElement('span');
+    slot.dataset.file = key;
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.textContent = label;
+    b.title = title;
+    b.setAttribute('aria-label', `export ${label}`);
+    b.addEventListener('click', () => onExport(key));
+    slot.append(b);
+    widget.append(slot);
+  }
+  row.append(name, widget);
+  return row;
 }
