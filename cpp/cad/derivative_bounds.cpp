@@ -6,6 +6,7 @@
 #include "common/limits.hpp"
 #include "expr/budget.hpp"
 #include "expr/interval.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 namespace {
@@ -14,6 +15,8 @@ namespace {
 constexpr double kRoundUp = 1.0 + 1e-13;
 // Nodes built for one derivative of a pointwise part (as for general functions).
 constexpr size_t kMaxDerivativeNodes = 200000;
+// Halvings of a span at most when bounding a general function over it.
+constexpr int kGeneralBoundHalvings = 6;
 
 double fallingFactorial(int n, int k) {
   double f = 1.0;
@@ -33,30 +36,66 @@ double bernsteinBound(std::vector<double> b, int k) {
   return m * fallingFactorial(n, k) * kRoundUp;
 }
 
+// The compiled forms of g^(k): an interval program for enclosures, a point program for samples.
+struct Compiled {
+  std::shared_ptr<const IntervalProgram> enclose;
+  std::shared_ptr<const ExprProgram> sample;
+};
+
+Compiled compiled(const GeneralFunction& g, int k, GeneralBoundCache* cache) {
+  const auto make = [&] {
+    const Expr& d = g.derivativeExpr(k);
+    return Compiled{std::make_shared<const IntervalProgram>(d), std::make_shared<const ExprProgram>(std::vector<Expr>{d})};
+  };
+  if (!cache) return make();
+  const std::pair<const void*, int> key{static_cast<const void*>(&g), k};
+  auto it = cache->programs.find(key);
+  if (it == cache->programs.end()) {
+    const Compiled c = make();
+    it = cache->programs.emplace(key, GeneralBoundCache::Programs{c.enclose, c.sample}).first;
+  }
+  return Compiled{it->second.enclose, it->second.sample};
+}
+
+using Bound = GeneralBoundCache::Bound;
+
 // Interval arithmetic overestimates (each occurrence of v varies on its own); where the
 // enclosure is far above the values at the ends and the middle, halve the interval, up to
-// `depth` times: the overestimate shrinks with the width.
-double boundGeneral(const GeneralFunction& g, int k, double a, double b, int depth, GeneralBoundCache* cache) {
-  std::shared_ptr<const IntervalProgram> program;
+// `depth` times: the overestimate shrinks with the width. Every interval's answer is kept
+// (refinement halves spans, whose halves were found here before) with what it depends on:
+// one that never met the depth limit is the same for any deeper limit.
+Bound boundGeneral(const GeneralFunction& g, int k, double a, double b, int depth, const Compiled& c,
+                   GeneralBoundCache* cache) {
+  const std::tuple<const void*, int, double, double> key{static_cast<const void*>(&g), k, a, b};
   if (cache) {
-    auto& slot = cache->programs[{static_cast<const void*>(&g), k}];
-    if (!slot) slot = std::make_shared<const IntervalProgram>(g.derivativeExpr(k));
-    program = slot;
-  } else {
-    program = std::make_shared<const IntervalProgram>(g.derivativeExpr(k));
+    const auto it = cache->bounds.find(key);
+    if (it != cache->bounds.end() && (it->second.limited ? it->second.levels == depth : it->second.levels <= depth))
+      return it->second;
   }
   const Interval vars[2] = {{a, b}, {0.0, 0.0}};
-  const double enclosed = program->run(vars).magnitude();
-  if (depth == 0) return enclosed;
-  double seen = 0.0;
-  const Expr& d = g.derivativeExpr(k);
-  for (double v : {a, 0.5 * (a + b), b}) {
-    const double at[2] = {v, 0.0};
-    seen = std::max(seen, std::abs(evaluate(*d, at)));
+  const double enclosed = c.enclose->run(vars).magnitude();
+  Bound r{enclosed, 0, true};
+  if (depth > 0) {
+    const double mid = 0.5 * (a + b);
+    const double at[3] = {a, mid, b};
+    double values[3];
+    c.sample->run(at, nullptr, 3, values);
+    double seen = 0.0;
+    for (double x : values) seen = std::max(seen, std::abs(x));  // NaN: not seen, so halve
+    if (enclosed <= 4 * seen + 1e-300) {
+      r = Bound{enclosed, 0, false};
+    } else {
+      const Bound left = boundGeneral(g, k, a, mid, depth - 1, c, cache);
+      const Bound right = boundGeneral(g, k, mid, b, depth - 1, c, cache);
+      r = Bound{std::max(left.value, right.value), 1 + std::max(left.levels, right.levels), left.limited || right.limited};
+    }
   }
-  if (enclosed <= 4 * seen + 1e-300) return enclosed;
-  const double mid = 0.5 * (a + b);
-  return std::max(boundGeneral(g, k, a, mid, depth - 1, cache), boundGeneral(g, k, mid, b, depth - 1, cache));
+  if (cache) cache->bounds[key] = r;
+  return r;
+}
+
+double boundGeneral(const GeneralFunction& g, int k, double a, double b, GeneralBoundCache* cache) {
+  return boundGeneral(g, k, a, b, kGeneralBoundHalvings, compiled(g, k, cache), cache).value;
 }
 
 }  // namespace
@@ -98,7 +137,7 @@ double boundVFunction(const VFunction& g, int k, double a, double b) {
       unit[size_t(g.n)] = 1.0;
       return bernsteinBound(unit, k);
     }
-    case Family::General: return boundGeneral(*g.general, k, a, b, 6, nullptr);
+    case Family::General: return boundGeneral(*g.general, k, a, b, nullptr);
   }
   return HUGE_VAL;
 }
@@ -118,10 +157,7 @@ std::array<Eigen::MatrixXd, 3> boundPartials(const SeparableSurface& s, int du, 
       for (int j = 0; j < nv; ++j) {
         const double a = vBreaks[size_t(j)], b = vBreaks[size_t(j) + 1];
         if (cache && g.family == Family::General) {
-          const auto key = std::make_tuple(static_cast<const void*>(g.general.get()), dv, a, b);
-          auto it = cache->bounds.find(key);
-          if (it == cache->bounds.end()) it = cache->bounds.emplace(key, boundGeneral(*g.general, dv, a, b, 6, cache)).first;
-          V(j, Eigen::Index(t)) = it->second;
+          V(j, Eigen::Index(t)) = boundGeneral(*g.general, dv, a, b, cache);
         } else {
           V(j, Eigen::Index(t)) = boundVFunction(g, dv, a, b);
         }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "expr/interval.hpp"
+#include "expr/program.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf {
@@ -24,9 +25,20 @@ double boundVFunction(const VFunction& g, int k, double a, double b);
 // Bounds of general functions already found during one fit, by (function, order, interval):
 // refinement keeps most spans from one round to the next.
 struct GeneralBoundCache {
-  std::map<std::tuple<const void*, int, double, double>, double> bounds;
+  // A bound, the halvings found below its interval, and whether one of them stopped at the
+  // halving limit (then it holds for that limit only).
+  struct Bound {
+    double value;
+    int levels;
+    bool limited;
+  };
+  std::map<std::tuple<const void*, int, double, double>, Bound> bounds;
   // Each general function's derivatives compiled once for enclosures and for sampling.
-  std::map<std::pair<const void*, int>, std::shared_ptr<const IntervalProgram>> programs;
+  struct Programs {
+    std::shared_ptr<const IntervalProgram> enclose;
+    std::shared_ptr<const ExprProgram> sample;
+  };
+  std::map<std::pair<const void*, int>, Programs> programs;
 };
 
 // bounds[c](i, j) >= |∂^du_u ∂^dv_v X_c| over [uBreaks[i], uBreaks[i+1]] × [vBreaks[j], vBreaks[j+1]].

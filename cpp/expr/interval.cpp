@@ -11,9 +11,15 @@ namespace {
 constexpr double kInf = HUGE_VAL;
 const Interval kWhole{-kInf, kInf};
 
+// At least one ulp outward, by arithmetic rather than libm's nextafter (a call per end that
+// cost a tenth of a fit's time): |x|·2^-52 is at least x's ulp, 2^-1074 covers 0 and the
+// subnormals, and the nearest double to x ∓ that lies beyond x. Infinities stay.
+double below(double x) { return std::abs(x) < kInf ? x - (std::abs(x) * 0x1p-52 + 0x1p-1074) : x; }
+double above(double x) { return std::abs(x) < kInf ? x + (std::abs(x) * 0x1p-52 + 0x1p-1074) : x; }
+
 Interval widen(double lo, double hi) {
   if (std::isnan(lo) || std::isnan(hi)) return kWhole;
-  return {std::nextafter(lo, -kInf), std::nextafter(hi, kInf)};
+  return {below(lo), above(hi)};
 }
 Interval hull4(double a, double b, double c, double d) {
   return widen(std::min(std::min(a, b), std::min(c, d)), std::max(std::max(a, b), std::max(c, d)));
