@@ -19,7 +19,7 @@
 using emscripten::val;
 using namespace pdesurf;
 using pdesurf::wasm::copyOut;
-using pdesurf::wasm::failure;
+using pdesurf::wasm::guarded;
 
 namespace {
 
@@ -192,7 +192,7 @@ struct MeshSource {
 
 val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvArg, bool curvature, bool joins, bool crossings,
                  bool topology) {
-  try {
+  return guarded("try a smaller grid", [&]() -> val {
     const int nu = gridArg(nuArg, "nu"), nv = gridArg(nvArg, "nv");
     checkGrid(nu, nv);
     const Scene scene = parseScene(sceneJson);
@@ -264,13 +264,7 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
     // one-off big grid does not stay held by the cache (the next solve reuses the memory).
     if (static_cast<size_t>(nu + 1) * (nv + 1) > size_t{513} * 513) std::vector<Mesh>().swap(meshes), meshSources.clear();
     return r;
-  } catch (const Error& e) {
-    return failure(errorCodeName(e.code()), e.what());
-  } catch (const std::bad_alloc&) {
-    return failure("Internal", "out of memory: try a smaller grid");
-  } catch (const std::exception& e) {
-    return failure("Internal", e.what());
-  }
+  });
 }
 
 val solveScenePlain(const std::string& sceneJson, val nu, val nv) { return solveSceneJs(sceneJson, nu, nv, false, false, false, true); }

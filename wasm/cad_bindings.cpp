@@ -17,7 +17,7 @@
 using emscripten::val;
 using namespace pdesurf;
 using pdesurf::wasm::copyOut;
-using pdesurf::wasm::failure;
+using pdesurf::wasm::guarded;
 
 namespace {
 
@@ -50,7 +50,7 @@ val faceOf(const PatchFit& f) {
 // options: {format: "step" | "iges" | "faces", tolerance: number (absolute; absent or 0: the
 // default, 1e-6 of the scene's diagonal), degree: 3 | 5}.
 val exportCad(const std::string& sceneJson, val options) {
-  try {
+  return guarded("try a larger tolerance", [&]() -> val {
     const bool isObject = !options.isUndefined() && !options.isNull() && options.typeOf().as<std::string>() == "object";
     std::string format = "faces";
     SceneFitOptions fit;
@@ -94,15 +94,8 @@ val exportCad(const std::string& sceneJson, val options) {
       info.tolerance = tolerance;
       r.set("text", format == "step" ? writeStep(surfaces, info) : writeIges(surfaces, info));
     }
-    return r;
-  } catch (const Error& e) {
-    return failure(errorCodeName(e.code()), e.what());
-  } catch (const std::bad_alloc&) {
-    return failure("Internal", "out of memory: try a larger tolerance");
-  } catch (const std::exception& e) {
-    return failure("Internal", e.what());
-  }
-}
+val exportCad(const std::string& sceneJson, val options) {
+  return guarded("try a larger tolerance", [&]() -> val {
 
 }  // namespace
 

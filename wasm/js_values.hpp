@@ -3,8 +3,12 @@
 #pragma once
 #include <emscripten/val.h>
 
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "common/errors.hpp"
 
 namespace pdesurf::wasm {
 
@@ -22,6 +26,21 @@ inline emscripten::val failure(const char* code, const std::string& message) {
   r.set("ok", false);
   r.set("error", err);
   return r;
+}
+
+// body()'s result, or its exception as a failure: a core error keeps its code; out of memory
+// says what to try (`hint`), since the module's heap, not the machine, ran out.
+template <class Body>
+emscripten::val guarded(const char* hint, Body&& body) {
+  try {
+    return body();
+  } catch (const Error& e) {
+    return failure(errorCodeName(e.code()), e.what());
+  } catch (const std::bad_alloc&) {
+    return failure("Internal", std::string("out of memory: ") + hint);
+  } catch (const std::exception& e) {
+    return failure("Internal", e.what());
+  }
 }
 
 }  // namespace pdesurf::wasm

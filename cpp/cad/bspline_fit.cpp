@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <string>
 
@@ -18,6 +17,9 @@
 
 namespace pdesurf {
 namespace {
+
+// Spans on either side halved with one whose border normal misses its target.
+constexpr int kNormalSpread = 2;
 
 // Grid values: each span cut into its own number of cells; uSpan[i] names the cell's span.
 void makeGrid(const std::vector<double>& breaks, const std::vector<int>& cuts, std::vector<double>* t, std::vector<int>* spanOf) {
@@ -366,10 +368,6 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
       }
     }
     const FourthBounds boundS = boundFourth(s, ub, vb, &boundCache), boundB = splineFourthBounds(b);
-    if (std::getenv("PDESURF_FIT_TRACE"))
-      for (int o = 0; o < 3; ++o)
-        std::fprintf(stderr, "  bounds %d: S %.3g B %.3g\n", o, std::max({boundS[o][0].maxCoeff(), boundS[o][1].maxCoeff(), boundS[o][2].maxCoeff()}),
-                     std::max({boundB[o][0].maxCoeff(), boundB[o][1].maxCoeff(), boundB[o][2].maxCoeff()}));
     const Certificate cert = certify(grid, S, tabulateSpline(b, grid.u, grid.v), boundS, boundB, rep.scale);
     const bool normalsMet = cert.normalDeg <= o.normalToleranceDeg;
     // Best so far: within the tolerance with the smallest normal deviation, else the smallest bound.
@@ -386,8 +384,6 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
       rep.gridPoints = points;
     }
     rep.iterations = iter;
-    if (std::getenv("PDESURF_FIT_TRACE"))
-      std::fprintf(stderr, "fit %d: spans %dx%d grid %zux%zu bound %.3g sampled %.3g normal %.3g°\n", iter, nsu, nsv, grid.u.size(), grid.v.size(), cert.bound, cert.sampled, cert.normalDeg);
     if (cert.bound <= o.tolerance && normalsMet) break;
     // Halve a span whose own direction misses a quarter of the tolerance; where a cell fails
     // with both its spans fitting, its samples are close and the bound's slack is the cause:
@@ -402,7 +398,14 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
         if (cert.cell(i, j) <= o.tolerance && !normalMissed) continue;
         const int su = grid.uSpan[size_t(i)], sv = grid.vSpan[size_t(j)];
         if (normalMissed) {
-          markU[size_t(su)] = markV[size_t(sv)] = true;  // normals: both directions' data matter
+          // A border's normal is B_u × B_v there, and both are v-fits (the u-ends are Hermite:
+          // B_u is the v-fit of S_u, B_v the derivative of the v-fit of S): the v-spans decide
+          // it. A span's position error e shows in B_v as about e / h, and least squares spreads
+          // e from the neighbours into a span halved alone: halve its neighbours with it.
+          for (int d = -kNormalSpread; d <= kNormalSpread; ++d) {
+            const int k = periodic ? ((sv + d) % nsv + nsv) % nsv : std::clamp(sv + d, 0, nsv - 1);
+            markV[size_t(k)] = true;
+          }
         } else if (markU[size_t(su)] || markV[size_t(sv)]) {
           continue;  // refined anyway where its own direction's residual says so
         } else if (!(cert.cellSampled(i, j) <= o.tolerance / 2)) {

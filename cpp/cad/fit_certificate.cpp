@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <Eigen/Geometry>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace pdesurf {
 namespace {
@@ -99,8 +97,6 @@ Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridP
     const Eigen::Vector3d ns = su.cross(sv), nb = bu.cross(bv);
     if (ns.norm() <= 1e-3 * su.norm() * sv.norm() || su.norm() <= 1e-2 * maxSu || sv.norm() <= 1e-2 * maxSv) return;
     angle(i, j) = std::atan2(ns.cross(nb).norm(), ns.dot(nb)) * 180.0 / M_PI;
-    if (std::getenv("PDESURF_FIT_TRACE") && angle(i, j) > 0.01)
-      std::fprintf(stderr, "  normal %g at (%g, %g): |ns| %g |su| %g |sv| %g |nb| %g\n", angle(i, j), g.u[size_t(i)], g.v[size_t(j)], ns.norm(), su.norm(), sv.norm(), nb.norm());
   };
   for (Eigen::Index j = 0; j < mv; ++j) normalAt(0, j), normalAt(mu - 1, j);
   out.normalDeg = angle.maxCoeff();

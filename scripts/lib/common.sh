@@ -73,13 +73,15 @@ build_web() {
 # (Until 2026-12 the sanitized suite was a g++ tree of its own and the fuzz targets a second
 # clang tree: the core was compiled twice more; docs/testing.md.)
 # Line tables only: reports keep their file:line stacks; the full debug information made this
-# build the slowest step of the suite (313 s against 188 s for the release build).
+# build the slowest step of the suite (313 s against 188 s for the release build). A unity
+# build (CMakeLists.txt says which sources stay out): 266 -> 210 s.
 configure_asan() {
   local cache="$BUILD/asan/CMakeCache.txt"
   # A tree configured by g++ (before the merge) is started afresh rather than reconfigured.
   if [ -f "$cache" ] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' "$cache"; then rm -rf "$BUILD/asan"; fi
   cmake -S "$ROOT" -B "$BUILD/asan" -DPDESURF_SANITIZE=ON -DPDESURF_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
-    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" >/dev/null
+    -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
+    -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 >/dev/null
 }
 
 build_asan() {

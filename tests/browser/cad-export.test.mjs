@@ -14,7 +14,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { spawnSync } from 'node:child_process';
-import { skip, startHarness, coldStart, shoot, solvedAfter, OUT_DIR, ROOT, REPO } from './harness.mjs';
+import { skip, startHarness, recordRequestsAndCsp, coldStart, shoot, solvedAfter, OUT_DIR, ROOT, REPO } from './harness.mjs';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
 
 const APP = process.env.PDESURF_APP_DIR || path.join(REPO, 'build', 'web');
@@ -85,7 +85,7 @@ function readBack(file, tolerance, names) {
 
 describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
   let h, page;
-  const requests = [];
+  let requests = [];
   const downloads = { n: 0 };
   const figures = [];
   let loadRequests = [];
@@ -94,11 +94,7 @@ describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
   before(async () => {
     fs.mkdirSync(CAD_DIR, { recursive: true });
     h = await startHarness();
-    await h.context.addInitScript(() => {
-      window.__cspViolations = [];
-      document.addEventListener('securitypolicyviolation', (e) => window.__cspViolations.push(`${e.violatedDirective}: ${e.blockedURI}`));
-    });
-    h.context.on('request', (r) => requests.push(new URL(r.url()).pathname));
+    requests = await recordRequestsAndCsp(h);
   });
   after(async () => {
     if (figures.length) console.log(`# cad exports: ${figures.join('; ')}`);

@@ -131,3 +131,18 @@ export async function coldStart(h, url) {
   await page.close();
   return { ms, bytes, encodings, state };
 }
+
+/**
+ * From now on in every page of the harness's context: content-security-policy violations in
+ * window.__cspViolations ("directive: blocked URI"), and the path of every request in the
+ * array returned.
+ */
+export async function recordRequestsAndCsp(h) {
+  const requests = [];
+  await h.context.addInitScript(() => {
+    window.__cspViolations = [];
+    document.addEventListener('securitypolicyviolation', (e) => window.__cspViolations.push(`${e.violatedDirective}: ${e.blockedURI}`));
+  });
+  h.context.on('request', (r) => requests.push(new URL(r.url()).pathname));
+  return requests;
+}

@@ -8,7 +8,7 @@ import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { skip, startHarness, REPO } from './harness.mjs';
+import { skip, startHarness, recordRequestsAndCsp, REPO } from './harness.mjs';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
 import { samples } from '../js/bspline-samples.mjs';
 import { evaluate } from '../js/de-boor.mjs';
@@ -39,14 +39,10 @@ async function checkFile(bytes) {
 
 describe('the .3dm writer in the page', { skip }, () => {
   let h;
-  const requests = [];
+  let requests = [];
   before(async () => {
     h = await startHarness();
-    await h.context.addInitScript(() => {
-      window.__cspViolations = [];
-      document.addEventListener('securitypolicyviolation', (e) => window.__cspViolations.push(`${e.violatedDirective}: ${e.blockedURI}`));
-    });
-    h.context.on('request', (r) => requests.push(new URL(r.url()).pathname));
+    requests = await recordRequestsAndCsp(h);
   });
   after(async () => {
     await h?.close();

@@ -4,15 +4,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { loadSolver } from '../../web/solver/pdesurf-solver.js';
+import { loadTestSolver } from './test-solver.mjs';
 import { createSceneState } from '../../web/state/scene-state.js';
 
 const root = new URL('../../', import.meta.url);
-const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
-const solver = await loadSolver({
-  moduleUrl: new URL('pdesurf.js', wasmDir).href,
-  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
-});
+const solver = await loadTestSolver();
 const GRID = { nu: 16, nv: 16 };
 
 function open(id) {

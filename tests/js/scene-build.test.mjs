@@ -6,9 +6,8 @@
 //   PDESURF_CLI=build/native/pdesurf PDESURF_BUILD_DIR=build node --test tests/js/scene-build.test.mjs
 import { describe, it } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
 import * as THREE from 'three';
-import { loadSolver } from '../../web/solver/pdesurf-solver.js';
+import { loadTestSolver } from './test-solver.mjs';
 import {
   newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter,
   setPlacement, placePoint, addBlend, addFill, trigCurveFromSamples, addSurface, lowestVersion,
@@ -16,12 +15,7 @@ import {
 import { compile, parameterValues } from '../../web/state/expr-text.js';
 import { check, refuses } from './build-helpers.mjs';
 
-const root = new URL('../../', import.meta.url);
-const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
-const solver = await loadSolver({
-  moduleUrl: new URL('pdesurf.js', wasmDir).href,
-  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
-});
+const solver = await loadTestSolver();
 const solve = (scene) => solver.solve(JSON.stringify(scene), { nu: 16, nv: 24 }).patches;
 
 /** Annulus, cylinder and the blend between them (the Add menu's first fillet). */

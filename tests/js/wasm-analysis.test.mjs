@@ -5,14 +5,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
-import { loadSolver } from '../../web/solver/pdesurf-solver.js';
+import { loadTestSolver } from './test-solver.mjs';
 
 const root = new URL('../../', import.meta.url);
-const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
-const solver = await loadSolver({
-  moduleUrl: new URL('pdesurf.js', wasmDir).href,
-  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
-});
+const solver = await loadTestSolver();
 const sceneText = (file) => readFileSync(new URL(`examples/${file}`, root), 'utf8');
 const cli = process.env.PDESURF_CLI ?? new URL('build/native/pdesurf', root).pathname;
 

@@ -10,14 +10,11 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
-import { loadSolver, PdesurfError } from '../../web/solver/pdesurf-solver.js';
+import { PdesurfError } from '../../web/solver/pdesurf-solver.js';
+import { loadTestSolver } from './test-solver.mjs';
 
 const root = new URL('../../', import.meta.url);
-const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
-const solver = await loadSolver({
-  moduleUrl: new URL('pdesurf.js', wasmDir).href,
-  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
-});
+const solver = await loadTestSolver();
 const cli = process.env.PDESURF_CLI ?? new URL('build/native/pdesurf', root).pathname;
 const readback = process.env.PDESURF_OCCT_READBACK ?? join(dirname(cli), 'tests/occt/occt_readback');
 const examplePath = (id) => new URL(`examples/${id}.json`, root).pathname;

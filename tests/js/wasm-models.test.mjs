@@ -8,17 +8,14 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
-import { loadSolver, PdesurfError } from '../../web/solver/pdesurf-solver.js';
+import { PdesurfError } from '../../web/solver/pdesurf-solver.js';
+import { loadTestSolver } from './test-solver.mjs';
 import { upstreamOf } from '../../web/ui/outliner.js';
 import { dependentsOf, downstreamOf, deletePatch } from '../../web/state/patch-delete.js';
 import { normaliseReport, joinKey, centreText } from '../../web/state/join-report.js';
 
 const root = new URL('../../', import.meta.url);
-const wasmDir = new URL(`${process.env.PDESURF_BUILD_DIR ?? 'build'}/wasm/`, root);
-const solver = await loadSolver({
-  moduleUrl: new URL('pdesurf.js', wasmDir).href,
-  wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)),
-});
+const solver = await loadTestSolver();
 const cli = process.env.PDESURF_CLI ?? new URL('build/native/pdesurf', root).pathname;
 const plane = () => JSON.parse(readFileSync(new URL('examples/you2004-fig8d.json', root), 'utf8'));
 const byName = (patches) => Object.fromEntries(patches.map((p) => [p.name, p]));
