@@ -7,6 +7,7 @@
 #include <cmath>
 #include <new>
 
+#include "cad/fitted_joins.hpp"
 #include "cad/iges_writer.hpp"
 #include "cad/scene_fit.hpp"
 #include "cad/step_writer.hpp"
@@ -83,19 +84,37 @@ val exportCad(const std::string& sceneJson, val options) {
       faces.call<void>("push", faceOf(f));
       surfaces.push_back(f.surface);
     }
+    // The joins between the faces, as `pdesurf export` prints them (cad/fitted_joins.hpp).
+    const double size = sceneSizeOf(solved);
+    val joins = val::array();
+    for (const FittedJoin& j : certifyFittedJoins(scene, solved, fits, size)) {
+      val o = val::object();
+      o.set("patch", j.faces.patch);
+      o.set("end", j.faces.end);
+      o.set("surface", j.faces.surface);
+      o.set("edge", j.faces.edge);
+      o.set("level", std::string(levelName(j.faces.level)));
+      o.set("gap", j.faces.g0 * size);
+      o.set("allowedGap", j.allowedGap);
+      o.set("normalDeg", j.faces.g1Deg);
+      o.set("ok", j.faces.ok);
+      joins.call<void>("push", o);
+    }
     val r = val::object();
     r.set("ok", true);
     r.set("title", scene.title);
     r.set("tolerance", tolerance);
     r.set("faces", faces);
+    r.set("joins", joins);
     if (format != "faces") {
       CadFileInfo info;
       info.title = scene.title;
       info.tolerance = tolerance;
       r.set("text", format == "step" ? writeStep(surfaces, info) : writeIges(surfaces, info));
     }
-val exportCad(const std::string& sceneJson, val options) {
-  return guarded("try a larger tolerance", [&]() -> val {
+    return r;
+  });
+}
 
 }  // namespace
 

@@ -104,8 +104,9 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
       said(`fitting ${label}…`);
       const file = await cad.cadFile({ solver, sceneText: state.text(), format, tolerance, base: baseName() });
       const summary = cad.fitSummary(format, file.fit);
-      said(summary.text, summary.missed.length ? 'warn' : null);
-      const note = summary.missed.length ? `normals target not reached on ${summary.missed.join(', ')}` : null;
+      said(summary.text, summary.missed.length || summary.joinsOff ? 'warn' : null);
+      const note = summary.missed.length ? `normals target not reached on ${summary.missed.join(', ')}`
+        : summary.joinsOff ? `${summary.joinsOff} join${summary.joinsOff === 1 ? '' : 's'} between faces off target` : null;
       return { ...file, note, record: cad.fitRecord(file.fit) };
     }, { label, said });
   }

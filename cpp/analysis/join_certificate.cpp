@@ -75,7 +75,16 @@ std::vector<EdgePoint> openEdgeSamples(const SeparableSurface& s, bool alongU, i
   return edgeSamples(s, alongU, end, a0 + h, a1 - h, count);
 }
 
-JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size) {
+// The parameters edgeSamples (open: openEdgeSamples) takes along [a0, a1], for another reader.
+std::vector<double> sampleParameters(double a0, double a1, int count, bool open) {
+  const double h = open ? (a1 - a0) / count / 2 : 0.0;
+  std::vector<double> at(static_cast<size_t>(count));
+  for (int k = 0; k < count; ++k) at[size_t(k)] = (a0 + h) + ((a1 - h) - (a0 + h)) * k / (count - 1);
+  return at;
+}
+
+JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size,
+                      const EdgeReader& read) {
   const SeparableSurface& ts = target.surface;
   const SourceEdge source = sourceEdgeOf(primary, m);
   JoinResult r;
@@ -97,15 +106,17 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
     p1 = sameV ? a1 : prim.surface.v1;
   }
   const auto sample = part ? openEdgeSamples : edgeSamples;
-  const auto B = sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
-  auto P = sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
+  const auto B = read ? read(target, m.alongU, m.end, sampleParameters(a0, a1, kJoinSamples, part))
+                      : sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
+  auto P = read ? read(prim, source.alongU, source.end, sampleParameters(p0, p1, kJoinSamples, part))
+                : sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
   if (m.eased) {  // the fill's evenly spaced samples, at the edge's parameters they map to
     std::vector<double> at;
     for (int k = 0; k < kJoinSamples; ++k) {
       const double w = (k + 0.5) / kJoinSamples, sigma = w - kFillEase * std::sin(2 * M_PI * w) / (2 * M_PI);
       at.push_back(p0 + (p1 - p0) * sigma);
     }
-    P = edgeSamplesAt(prim.surface, source.alongU, source.end, at);
+    P = read ? read(prim, source.alongU, source.end, at) : edgeSamplesAt(prim.surface, source.alongU, source.end, at);
   }
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
@@ -174,14 +185,14 @@ double sceneSizeOf(const std::vector<SolvedPatch>& solved) {
   return std::isfinite(d) && d > 0 ? d : 1.0;
 }
 
-std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double size) {
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double size, const EdgeReader& read) {
   std::vector<JoinResult> out;
   for (size_t i = 0; i < solved.size(); ++i) {
     const Patch& p = *solved[i].patch;
     for (const Meets& m : p.meets) {
       const SolvedPatch& target = solvedOf(solved, m.patch);
       try {
-        out.push_back(certifyOne(p, m, solved[i], target, size));
+        out.push_back(certifyOne(p, m, solved[i], target, size, read));
       } catch (const Error& e) {
         // A join derived from an end is that end's; the scene's own is the surface's `meets`.
         size_t index = 0;

@@ -4,10 +4,12 @@
 // kJoinSamples points; a verdict against what the patch promises (2nd order G0, 4th G1, 6th
 // G2; a membrane Bézier G0, a thin plate G1); plus the crossings found (analysis/crossings).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "analysis/crossings.hpp"
+#include "analysis/edge_samples.hpp"
 #include "analysis/fill_centre.hpp"
 #include "scene/scene.hpp"
 
@@ -43,8 +45,15 @@ struct SceneReport {
 
 const char* levelName(int level);  // "G0", "G1", "G2"
 
-// sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf).
-std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize);
+// Where the certificate reads an edge: `patch`'s edge u = end (alongU false) or v = end
+// (alongU true) at the parameters `at` along it. By default the solved surfaces; a CAD export
+// measures its fitted faces through the same door (cad/fitted_joins.hpp).
+using EdgeReader = std::function<std::vector<EdgePoint>(const SolvedPatch& patch, bool alongU, int end, const std::vector<double>& at)>;
+
+// sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf). The verdicts (ok)
+// are the solved surfaces' tolerances; another reader's caller judges its own.
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize,
+                                     const EdgeReader& read = nullptr);
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
 // Joins, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);

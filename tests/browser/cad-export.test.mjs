@@ -132,6 +132,9 @@ describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
     assert.equal(fit.bytes, step.bytes.length);
     assert.deepEqual(fit.faces.map((f) => f.name), NAMES);
     assert.ok(fit.tolerance > 0);
+    // fig. 4a's two G1 joins, measured between the written faces.
+    assert.deepEqual(fit.joins.map((j) => [j.patch, j.end, j.level, j.ok]), [['blend', 'u0', 'G1', true], ['blend', 'u1', 'G1', true]]);
+    for (const j of fit.joins) assert.ok(j.gap <= j.allowedGap && j.normalDeg <= 0.01, JSON.stringify(j));
     for (const f of fit.faces) assert.ok(f.deviation <= fit.tolerance, `${f.name}: ${f.deviation} > ${fit.tolerance}`);
     const worst = Math.max(...fit.faces.map((f) => f.deviation));
     const line = await page.locator(cadLine).textContent();

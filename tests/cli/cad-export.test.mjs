@@ -2,7 +2,9 @@
 // example, each file a valid shape with one face per patch, named after it, within the
 // tolerance of the core's surface at grid points that do not line up with the knots. A fit
 // loosened past the tolerance fails the same check; an unreachable tolerance is a named error
-// that leaves no file. docs/cad-export.md.
+// that leaves no file. The joins between the written faces are those `pdesurf check` finds
+// between the surfaces, each within both faces' deviations, G1 and up with normals within
+// 0.01°. docs/cad-export.md.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, spawnSync } from 'node:child_process';
@@ -43,15 +45,32 @@ function parseExport(stdout) {
   const patches = [...stdout.matchAll(/^ {2}(\S+): (exact|certified deviation (\S+))/gm)].map((m) => ({
     name: m[1], exact: m[2] === 'exact', deviation: m[3] ? Number(m[3]) : 0,
   }));
-  return { tolerance, patches };
+  // "  blend u0 - rippled t0: G1, gap 1.7e-15 (allowed 8e-06), normals 1.6e-11 deg (target 0.01): ok"
+  const joins = [...stdout.matchAll(/^ {2}(\S+ \S+ - .+): (G[012]), gap (\S+) \(allowed (\S+)\)(?:, normals (\S+) deg \(target (\S+)\))?: (.+)$/gm)]
+    .map((m) => ({ join: m[1], level: m[2], gap: Number(m[3]), allowed: Number(m[4]), normalDeg: m[5] === undefined ? null : Number(m[5]), verdict: m[7] }));
+  return { tolerance, patches, joins };
+}
+
+// The joins `pdesurf check` certifies between the surfaces: the same ones are measured between
+// the written faces, each within both faces' deviations and, G1 and up, normals within 0.01°.
+function checkFittedJoins(id, joins) {
+  const checked = spawnSync(cli, ['check', example(id), '--json', '--grid', '4x4'], { encoding: 'utf8' });
+  const expected = JSON.parse(checked.stdout).joins.length;
+  assert.equal(joins.length, expected, `${id}: ${joins.length} joins of the faces, ${expected} of the surfaces`);
+  for (const j of joins) {
+    assert.equal(j.verdict, 'ok', `${id} ${j.join}`);
+    assert.ok(j.gap <= j.allowed, `${id} ${j.join}: gap ${j.gap} > ${j.allowed}`);
+    if (j.level !== 'G0') assert.ok(j.normalDeg <= 0.01, `${id} ${j.join}: normals ${j.normalDeg} deg`);
+  }
 }
 
 async function exportAndReadBack(id, ext) {
   const file = join(dir, `${id}.${ext}`);
   const r = await runAsync(cli, ['export', example(id), '-o', file]);
   assert.equal(r.status, 0, `${id}.${ext}: ${r.stderr}`);
-  const { tolerance, patches } = parseExport(r.stdout);
+  const { tolerance, patches, joins } = parseExport(r.stdout);
   for (const p of patches) assert.ok(p.deviation <= tolerance, `${id} ${p.name}: ${p.deviation} > ${tolerance}`);
+  checkFittedJoins(id, joins);
   const expect = join(dir, `${id}.${ext}.expect.json`);
   writeFileSync(expect, JSON.stringify({ tolerance, faces: samples(id, patches.map((p) => p.name)) }));
   const back = await runAsync(readback, [file, expect]);
@@ -64,7 +83,7 @@ async function exportAndReadBack(id, ext) {
 }
 
 // Under AddressSanitizer (the sanitize row) two small examples; natively every one. The
-// aeroplane (22 patches, 31 s a file) goes out as STEP only.
+// aeroplane (22 patches, 14 s a file) goes out as STEP only.
 const index = JSON.parse(readFileSync(join(root, 'examples/index.json'), 'utf8'));
 const ids = (index.examples ?? index).map((e) => e.id ?? e);
 const chosen = sanitized ? ['you2004-fig4a', 'wu2015-fig1a'] : ids;

@@ -29,7 +29,7 @@ describe('the figures line', () => {
 
   it('gives the faces, the largest certified deviation and the tolerance', () => {
     const fit = { tolerance: 8.2e-6, faces: [face('blend', 5.31e-6), face('cylinder', 1e-7), face('plane', 0)] };
-    assert.deepEqual(fitSummary('step', fit), { text: 'STEP: 3 faces, certified within 5.3e-6 (tolerance 8.2e-6)', missed: [] });
+    assert.deepEqual(fitSummary('step', fit), { text: 'STEP: 3 faces, certified within 5.3e-6 (tolerance 8.2e-6)', missed: [], joinsOff: 0 });
     assert.equal(fitSummary('3dm', { tolerance: 1, faces: [face('a', 0, { exact: true })] }).text, '3dm: 1 face (1 exact), certified within 0 (tolerance 1)');
   });
 
@@ -37,10 +37,22 @@ describe('the figures line', () => {
     const fit = { tolerance: 1e-3, faces: [face('a', 1e-4, { normalsMet: false, normalDeviationDeg: 0.0234 }), face('b', 2e-4)] };
     assert.deepEqual(fitSummary('iges', fit), {
       text: 'IGES: 2 faces, certified within 2.0e-4 (tolerance 0.001); normals at the ends of a within 0.023° (target 0.01° not reached)',
-      missed: ['a'],
+      missed: ['a'], joinsOff: 0,
     });
     assert.deepEqual(fitRecord({ ...fit, ms: 12 }).faces.map((f) => f.name), ['a', 'b']);
     assert.deepEqual(Object.keys(CAD_FORMATS), ['step', 'iges', '3dm']);
+  });
+
+  it('names the joins between the faces that are off their target, and records every join', () => {
+    const join = (patch, extra = {}) => ({ patch, end: 'u0', surface: 'plane', edge: 't0', level: 'G1', gap: 1e-7, allowedGap: 1e-5, normalDeg: 0.0012, ok: true, ...extra });
+    const faces = [face('blend', 5.31e-6), face('plane', 0)];
+    assert.deepEqual(fitSummary('step', { tolerance: 8.2e-6, faces, joins: [join('blend'), join('blend', { end: 'u1', normalDeg: 0.0043 })] }),
+      { text: 'STEP: 2 faces, certified within 5.3e-6 (tolerance 8.2e-6)', missed: [], joinsOff: 0 });
+    assert.deepEqual(fitSummary('step', { tolerance: 8.2e-6, faces, joins: [join('blend'), join('blend', { end: 'u1', ok: false, gap: 3e-5, normalDeg: 0.05 })] }), {
+      text: 'STEP: 2 faces, certified within 5.3e-6 (tolerance 8.2e-6); joins off their target: blend u1 – plane (gap 3.0e-5, normals 0.05°)',
+      missed: [], joinsOff: 1,
+    });
+    assert.deepEqual(fitRecord({ tolerance: 1, faces, joins: [join('blend')], ms: 3 }).joins.map((j) => [j.patch, j.ok]), [['blend', true]]);
   });
 });
 

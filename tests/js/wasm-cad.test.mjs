@@ -64,6 +64,18 @@ test('the module reports the same fit as the CLI: poles, deviations within 1e-6 
     assert.equal(f.countV, Number(m[3]));
     assert.ok(Math.abs(f.deviation - Number(m[1])) <= 1e-2 * f.deviation + 1e-12, `${f.deviation} vs ${m[1]}`);
   }
+  // The joins between the faces: the CLI's lines, the same verdicts and figures (printed to
+  // 3 significant digits, normals to 2).
+  const lines = [...text.matchAll(/^ {2}(\S+) (\S+) - (\S+) .*: (G[012]), gap (\S+) \(allowed \S+\)(?:, normals (\S+) deg.*)?: (\S+)$/gm)];
+  assert.equal(out.joins.length, lines.length);
+  assert.ok(out.joins.length >= 2, text);
+  out.joins.forEach((j, k) => {
+    const [, patch, end, surface, level, gap, normal, verdict] = lines[k];
+    assert.deepEqual([j.patch, j.end, j.surface, j.level, j.ok], [patch, end, surface, level, verdict === 'ok']);
+    assert.ok(j.ok && j.gap <= j.allowedGap, JSON.stringify(j));
+    assert.ok(Math.abs(j.gap - Number(gap)) <= 1e-2 * j.gap + 1e-12, `${j.gap} vs ${gap}`);
+    if (level !== 'G0') assert.ok(j.normalDeg <= 0.01 && Math.abs(j.normalDeg - Number(normal)) <= 5e-2 * j.normalDeg + 1e-30, `${j.normalDeg} vs ${normal}`);
+  });
 });
 
 test('bad options and unreachable tolerances are named errors; the module keeps working', () => {

@@ -55,9 +55,10 @@ const degrees = (x) => `${Number(x.toPrecision(2))}°`;
 /**
  * What the fit achieved, as one line of text: "STEP: 3 faces, certified within 5.3e-6
  * (tolerance 8.2e-6)", then the patches whose normals at the ends missed the 0.01° target
- * (a target, not a promise: docs/cad-export.md). { text, missed (names) }.
+ * (a target, not a promise: docs/cad-export.md), then the joins between the faces that are
+ * off theirs. { text, missed (names), joinsOff (count) }.
  */
-export function fitSummary(format, { tolerance, faces }) {
+export function fitSummary(format, { tolerance, faces, joins = [] }) {
   const n = faces.length;
   const worst = faces.reduce((m, f) => Math.max(m, f.deviation), 0);
   const exact = faces.filter((f) => f.exact).length;
@@ -66,14 +67,21 @@ export function fitSummary(format, { tolerance, faces }) {
   if (missed.length) {
     text += `; normals at the ends of ${missed.map((f) => `${f.name} within ${degrees(f.normalDeviationDeg)}`).join(', ')} (target 0.01° not reached)`;
   }
-  return { text, missed: missed.map((f) => f.name) };
+  // The joins between the faces (the join certificate read on the fitted faces): named, as the
+  // normals are, only when one is off its target; hooks.lastFile keeps every figure.
+  const off = joins.filter((j) => !j.ok);
+  if (off.length) {
+    text += `; joins off their target: ${off.map((j) => `${j.patch} ${j.end} – ${j.surface} (gap ${sci(j.gap)}, normals ${degrees(j.normalDeg)})`).join(', ')}`;
+  }
+  return { text, missed: missed.map((f) => f.name), joinsOff: off.length };
 }
 
 /** The fit's figures for hooks.lastFile (web/test-hooks.js). */
-export function fitRecord({ tolerance, faces, ms }) {
+export function fitRecord({ tolerance, faces, joins = [], ms }) {
   return {
     tolerance,
     fitMs: ms,
+    joins: joins.map((j) => ({ patch: j.patch, end: j.end, surface: j.surface, level: j.level, gap: j.gap, allowedGap: j.allowedGap, normalDeg: j.normalDeg, ok: j.ok })),
     faces: faces.map((f) => ({ name: f.name, deviation: f.deviation, normalDeviationDeg: f.normalDeviationDeg, normalsMet: f.normalsMet, exact: f.exact })),
   };
 }

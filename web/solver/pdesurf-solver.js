@@ -76,7 +76,7 @@ function exportCadWith(Module, scene, { format = 'faces', tolerance, degree } = 
     const e = res.error || {};
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown export error'));
   }
-  return { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), text: res.text };
+  return { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), joins: Array.from(res.joins || []), text: res.text };
 }
 
 // The scene as JSON text, or a PdesurfError: JSON.stringify throws RangeError on a too deep
