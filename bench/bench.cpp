@@ -88,6 +88,7 @@ std::pair<double, double> fullAndReused(const BezierProblem& p) {
 namespace pdesurf {
 double benchMedianSeconds(const std::function<void()>& f) { return medianSeconds(f); }
 void benchModels(const std::string& dir);  // bench/models_bench.cpp
+void benchCad(const std::string& dir);     // bench/cad_bench.cpp
 }  // namespace pdesurf
 
 int main() {
@@ -248,5 +249,6 @@ int main() {
                 100 * (cross / plain - 1), 100 * (both / plain - 1));
   }
   benchModels(dir);
+  benchCad(dir);
   return 0;
 }
