@@ -29,14 +29,12 @@ std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU,
 }
 
 std::vector<EdgePoint> edgeSamplesAt(const SeparableSurface& s, bool alongU, int end, const std::vector<double>& at) {
-  const double sign = end == 0 ? 1.0 : -1.0;
   std::vector<EdgePoint> out;
   for (double a : at) {
     const double u = alongU ? a : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : a;
     const Eigen::Vector3d X = evalPoint(s, u, v), Xu = evalPoint(s, u, v, 1, 0), Xv = evalPoint(s, u, v, 0, 1);
     const Eigen::Vector3d Xuu = evalPoint(s, u, v, 2, 0), Xuv = evalPoint(s, u, v, 1, 1), Xvv = evalPoint(s, u, v, 0, 2);
-    if (alongU) out.push_back({X, Xu, sign * Xv, Xvv, Xuu, sign * Xuv});
-    else out.push_back({X, Xv, sign * Xu, Xuu, Xvv, sign * Xuv});
+    out.push_back(edgePointFrom(alongU, end, X, Xu, Xv, Xuu, Xuv, Xvv));
   }
   return out;
 }

@@ -11,15 +11,13 @@ namespace {
 // knots are in the patch's own (u, v), so the parameters are the same.
 std::vector<EdgePoint> fittedEdge(const BSplineSurface& b, const SeparableSurface& s, bool alongU, int end,
                                   const std::vector<double>& at) {
-  const double sign = end == 0 ? 1.0 : -1.0;
   std::vector<EdgePoint> out;
   out.reserve(at.size());
   for (double a : at) {
     const double u = alongU ? a : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : a;
     const Eigen::Vector3d X = evaluate(b, u, v), Xu = evaluate(b, u, v, 1, 0), Xv = evaluate(b, u, v, 0, 1);
     const Eigen::Vector3d Xuu = evaluate(b, u, v, 2, 0), Xuv = evaluate(b, u, v, 1, 1), Xvv = evaluate(b, u, v, 0, 2);
-    if (alongU) out.push_back({X, Xu, sign * Xv, Xvv, Xuu, sign * Xuv});
-    else out.push_back({X, Xv, sign * Xu, Xuu, Xvv, sign * Xuv});
+    out.push_back(edgePointFrom(alongU, end, X, Xu, Xv, Xuu, Xuv, Xvv));
   }
   return out;
 }
