@@ -16,6 +16,7 @@ namespace pdesurf {
 
 struct GridRow {
   int quantities = 3;  // 3, or 6 with second derivatives
+  size_t count = 0;    // points held (the arrays may be longer)
   std::array<std::array<std::vector<double>, 3>, 6> d;
   const double* at(int q, int c) const { return d[q][c].data(); }
 };
@@ -23,53 +24,58 @@ struct GridRow {
 // (a, b) = (u-derivative order, v-derivative order) of each quantity q.
 constexpr int kRowDerivative[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
 
-// Calls emitRow(j, row) for j = 0..nv. Throws Error(NonFinite) where a non-separable part is
-// not finite.
-template <class EmitRow>
-void combineRows(const Tabulation& t, EmitRow&& emitRow) {
+// The separable part of row j's points i0 .. i0 + len − 1 (surface/combine_rows.cpp):
+// row.d[q][c][i] = Σ_t G_t^(a_q)(u_{i0+i}) g_t^(b_q)(v_j) for every quantity q and component c.
+void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row);
+
+// Calls emit(j, i0, row) for every row j = 0..nv in pieces of at most `piece` points,
+// i0 = 0, piece, 2·piece, …; row holds points i0 .. i0 + row.count − 1. A piece that fits in
+// L1 (tessellation uses 256 points) is combined and consumed while it is still there.
+// Throws Error(NonFinite) where a non-separable part is not finite.
+template <class Emit>
+void combineRowPieces(const Tabulation& t, size_t piece, Emit&& emit) {
   const int nv = t.nv, D = t.depth;
   const size_t m = static_cast<size_t>(t.nu) + 1;
+  piece = std::min(piece, m);
   GridRow row;
   row.quantities = D >= 3 ? 6 : 3;
   const int Q = row.quantities;
   for (int q = 0; q < Q; ++q)
-    for (int c = 0; c < 3; ++c) row.d[q][c].resize(m);
-  std::vector<double> rowV(m);  // v of the current row, for the pointwise programs
+    for (int c = 0; c < 3; ++c) row.d[q][c].resize(piece);
+  const bool pointwise = t.pointwiseProgram[0] || t.pointwiseProgram[1] || t.pointwiseProgram[2];
+  std::vector<double> pieceV;  // v of the current row, for the pointwise programs
   std::array<std::vector<double>, 6> part;
-  for (auto& p : part) p.resize(m);
-  std::array<double*, 6> partOut{part[0].data(), part[1].data(), part[2].data(), part[3].data(), part[4].data(), part[5].data()};
-  for (int j = 0; j <= nv; ++j) {
-    for (int c = 0; c < 3; ++c) {
-      const int T = t.terms[c];
-      for (int q = 0; q < Q; ++q) std::fill(row.d[q][c].begin(), row.d[q][c].end(), 0.0);
-      const double* gv = t.vTab[c].data() + static_cast<size_t>(j) * D * T;
-      for (int k = 0; k < T; ++k) {
-        const double* G = t.uTab[c].data() + static_cast<size_t>(D * k) * m;
-        for (int q = 0; q < Q; ++q) {
-          const double g = gv[D * k + kRowDerivative[q][1]];
-          if (g == 0.0) continue;
-          const double* Gq = G + kRowDerivative[q][0] * m;
-          double* out = row.d[q][c].data();
-          for (size_t i = 0; i < m; ++i) out[i] += Gq[i] * g;
-        }
-      }
-    }
-    for (int c = 0; c < 3; ++c) {  // rare: surfaces typed as non-separable expressions
-      if (!t.pointwiseProgram[c]) continue;
-      std::fill(rowV.begin(), rowV.end(), t.v[j]);
-      t.pointwiseProgram[c]->runAll(rowV.data(), t.u.data(), m, partOut.data());
-      for (size_t i = 0; i < m; ++i) {
-        for (int q = 0; q < Q; ++q) {
-          double& x = row.d[q][c][i];
-          x += part[q][i];
-          if (!std::isfinite(x))
-            throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
-                                                  std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) + ")");
-        }
-      }
-    }
-    emitRow(j, static_cast<const GridRow&>(row));
+  std::array<double*, 6> partOut{};
+  if (pointwise) {
+    pieceV.resize(piece);
+    for (int q = 0; q < 6; ++q) part[q].resize(piece), partOut[q] = part[q].data();
   }
+  for (int j = 0; j <= nv; ++j)
+    for (size_t i0 = 0; i0 < m; i0 += piece) {
+      const size_t len = std::min(piece, m - i0);
+      row.count = len;
+      combineSeparablePiece(t, j, i0, len, row);
+      for (int c = 0; c < 3; ++c) {  // rare: surfaces typed as non-separable expressions
+        if (!t.pointwiseProgram[c]) continue;
+        std::fill(pieceV.begin(), pieceV.begin() + len, t.v[j]);
+        t.pointwiseProgram[c]->runAll(pieceV.data(), t.u.data() + i0, len, partOut.data());
+        for (size_t i = 0; i < len; ++i)
+          for (int q = 0; q < Q; ++q) {
+            double& x = row.d[q][c][i];
+            x += part[q][i];
+            if (!std::isfinite(x))
+              throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
+                                                    std::to_string(t.u[i0 + i]) + ", " + std::to_string(t.v[j]) + ")");
+          }
+      }
+      emit(j, i0, static_cast<const GridRow&>(row));
+    }
+}
+
+// Calls emitRow(j, row) for j = 0..nv with whole rows (row.count = nu + 1).
+template <class EmitRow>
+void combineRows(const Tabulation& t, EmitRow&& emitRow) {
+  combineRowPieces(t, static_cast<size_t>(t.nu) + 1, [&](int j, size_t, const GridRow& row) { emitRow(j, row); });
 }
 
 }  // namespace pdesurf

@@ -2,81 +2,147 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#include "common/vector_clones.hpp"
 
 namespace pdesurf {
 
 namespace {
 
-// Branch-free so the loop vectorises (the core is compiled without errno and FP traps): a
-// degenerate point computes with a harmless 1 in place of |X_u × X_v|² and is masked to 0.
-// Its flags go to chunks of doubles counted after the loop: an integer counter inside it
-// would keep it scalar.
-template <bool Curvature>
-void frameChunk(const GridRow& row, RowFrame& f, float* P, float* Nf, float* H, float* K, size_t i0, size_t i1) {
-  constexpr size_t kChunk = 256;
-  double pole[kChunk], flat[kChunk], bad[kChunk];
-  constexpr double kFloatMax = 3.4028234663852886e38, kDoubleMax = 1.7976931348623157e308;
-  const double *xu = row.at(1, 0), *yu = row.at(1, 1), *zu = row.at(1, 2);
-  const double *xv = row.at(2, 0), *yv = row.at(2, 1), *zv = row.at(2, 2);
+constexpr size_t kChunk = 256;
+constexpr double kFloatMax = 3.4028234663852886e38, kDoubleMax = 1.7976931348623157e308;
+constexpr unsigned kPole = 1, kOutOfRange = 2, kDegenerate = 4;
+
+// The row's arrays from point i0 on.
+struct RowSlice {
+  const double *x, *y, *z, *xu, *yu, *zu, *xv, *yv, *zv;
   const double *xuu = nullptr, *yuu = nullptr, *zuu = nullptr, *xuv = nullptr, *yuv = nullptr, *zuv = nullptr,
                *xvv = nullptr, *yvv = nullptr, *zvv = nullptr;
-  if constexpr (Curvature) {
-    xuu = row.at(3, 0), yuu = row.at(3, 1), zuu = row.at(3, 2);
-    xuv = row.at(4, 0), yuv = row.at(4, 1), zuv = row.at(4, 2);
-    xvv = row.at(5, 0), yvv = row.at(5, 1), zvv = row.at(5, 2);
+  RowSlice(const GridRow& row, size_t i0, bool curvature)
+      : x(row.at(0, 0) + i0), y(row.at(0, 1) + i0), z(row.at(0, 2) + i0), xu(row.at(1, 0) + i0), yu(row.at(1, 1) + i0),
+        zu(row.at(1, 2) + i0), xv(row.at(2, 0) + i0), yv(row.at(2, 1) + i0), zv(row.at(2, 2) + i0) {
+    if (!curvature) return;
+    xuu = row.at(3, 0) + i0, yuu = row.at(3, 1) + i0, zuu = row.at(3, 2) + i0;
+    xuv = row.at(4, 0) + i0, yuv = row.at(4, 1) + i0, zuv = row.at(4, 2) + i0;
+    xvv = row.at(5, 0) + i0, yvv = row.at(5, 1) + i0, zvv = row.at(5, 2) + i0;
   }
-  const double *x = row.at(0, 0), *y = row.at(0, 1), *z = row.at(0, 2);
-  for (size_t i = i0; i < i1; ++i) {
-    const double nx = yu[i] * zv[i] - zu[i] * yv[i], ny = zu[i] * xv[i] - xu[i] * zv[i], nz = xu[i] * yv[i] - yu[i] * xv[i];
+};
+
+// The flags of one point (kPole, kOutOfRange, kDegenerate), recomputed: only for a chunk whose
+// vector pass saw one, to count them and find the first out-of-range point.
+unsigned pointFlags(const RowSlice& s, size_t k, bool curvature) {
+  const double nx = s.yu[k] * s.zv[k] - s.zu[k] * s.yv[k], ny = s.zu[k] * s.xv[k] - s.xu[k] * s.zv[k],
+               nz = s.xu[k] * s.yv[k] - s.yu[k] * s.xv[k];
+  const double det = nx * nx + ny * ny + nz * nz;
+  const double E = s.xu[k] * s.xu[k] + s.yu[k] * s.yu[k] + s.zu[k] * s.zu[k];
+  const double G = s.xv[k] * s.xv[k] + s.yv[k] * s.yv[k] + s.zv[k] * s.zv[k];
+  const double big = std::max(E, G);
+  const bool inRange = std::fabs(s.x[k]) <= kFloatMax && std::fabs(s.y[k]) <= kFloatMax && std::fabs(s.z[k]) <= kFloatMax && det <= kDoubleMax;
+  unsigned flags = 0;
+  if (!(det > 1e-24 * E * G)) flags |= kPole;
+  if (!inRange) flags |= kOutOfRange;
+  if (curvature && !(det > 1e-24 * big * big)) flags |= kDegenerate;
+  return flags;
+}
+
+// out[3k..3k+2] = (a[k], b[k], c[k]): four points per step in three vector shuffles (neither
+// GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic vectors:
+// SSE natively, simd128 in wasm, scalar code without either.
+PDESURF_INLINE void interleave3(const float* __restrict a, const float* __restrict b, const float* __restrict c, float* __restrict out, size_t n) {
+  typedef float Float4 __attribute__((vector_size(16)));
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    Float4 x, y, z;
+    std::memcpy(&x, a + k, 16), std::memcpy(&y, b + k, 16), std::memcpy(&z, c + k, 16);
+    const Float4 xyLow = __builtin_shufflevector(x, y, 0, 4, 1, 5);   // x0 y0 x1 y1
+    const Float4 xyHigh = __builtin_shufflevector(x, y, 2, 6, 3, 7);  // x2 y2 x3 y3
+    const Float4 yzOne = __builtin_shufflevector(xyLow, z, 3, 5, 3, 5);  // y1 z1 y1 z1
+    const Float4 o0 = __builtin_shufflevector(xyLow, z, 0, 1, 4, 2);    // x0 y0 z0 x1
+    const Float4 o1 = __builtin_shufflevector(yzOne, xyHigh, 0, 1, 4, 5);  // y1 z1 x2 y2
+    const Float4 o2 = __builtin_shufflevector(z, xyHigh, 2, 6, 7, 3);   // z2 x3 y3 z3
+    std::memcpy(out + 3 * k, &o0, 16), std::memcpy(out + 3 * k + 4, &o1, 16), std::memcpy(out + 3 * k + 8, &o2, 16);
+  }
+  for (; k < n; ++k) out[3 * k] = a[k], out[3 * k + 1] = b[k], out[3 * k + 2] = c[k];
+}
+
+// One chunk in two passes. The first is arithmetic on doubles only, so it vectorises (the
+// core is compiled without errno and FP traps, and with OpenMP's simd pragmas): a degenerate
+// point computes with a harmless 1 in place of |X_u × X_v|² and is masked to 0, and the
+// chunk's flagged points are summed. Then floats, interleaved xyz.
+// Returns whether any point is flagged (a pole, out of range or, with curvature, degenerate).
+template <bool Curvature>
+PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict P, float* __restrict Nf, float* __restrict H, float* __restrict K) {
+  alignas(64) float fx[kChunk], fy[kChunk], fz[kChunk], fnx[kChunk], fny[kChunk], fnz[kChunk];
+  // Local copies: GCC reloads a struct's pointer members inside the loop and gives up.
+  const double *__restrict x = s.x, *__restrict y = s.y, *__restrict z = s.z;
+  const double *__restrict xu = s.xu, *__restrict yu = s.yu, *__restrict zu = s.zu;
+  const double *__restrict xv = s.xv, *__restrict yv = s.yv, *__restrict zv = s.zv;
+  const double *__restrict xuu = s.xuu, *__restrict yuu = s.yuu, *__restrict zuu = s.zuu;
+  const double *__restrict xuv = s.xuv, *__restrict yuv = s.yuv, *__restrict zuv = s.zuv;
+  const double *__restrict xvv = s.xvv, *__restrict yvv = s.yvv, *__restrict zvv = s.zvv;
+  // Flagged points are summed as doubles: an integer OR or count would keep GCC scalar.
+  double flagged = 0;
+#pragma omp simd reduction(+ : flagged)
+  for (size_t k = 0; k < len; ++k) {
+    const double nx = yu[k] * zv[k] - zu[k] * yv[k], ny = zu[k] * xv[k] - xu[k] * zv[k],
+                 nz = xu[k] * yv[k] - yu[k] * xv[k];
     const double det = nx * nx + ny * ny + nz * nz;  // |X_u × X_v|² = EG − F²
-    const double E = xu[i] * xu[i] + yu[i] * yu[i] + zu[i] * zu[i], G = xv[i] * xv[i] + yv[i] * yv[i] + zv[i] * zv[i];
-    const bool hasNormal = det > 1e-24 * E * G && det > 0;
-    pole[i - i0] = hasNormal ? 0.0 : 1.0;
-    // NaN fails every comparison, so it lands here too.
-    const bool inRange = std::fabs(x[i]) <= kFloatMax && std::fabs(y[i]) <= kFloatMax && std::fabs(z[i]) <= kFloatMax && det <= kDoubleMax;
-    bad[i - i0] = inRange ? 0.0 : 1.0;
+    const double E = xu[k] * xu[k] + yu[k] * yu[k] + zu[k] * zu[k];
+    const double G = xv[k] * xv[k] + yv[k] * yv[k] + zv[k] * zv[k];
+    // E, G ≥ 0, so this also means det > 0; NaN fails it.
+    const bool hasNormal = det > 1e-24 * E * G;
+    // A superset of the out-of-range points (NaN or ∞ anywhere makes it NaN or ∞; a sum may
+    // flag a point that fits): pointFlags decides.
+    const double reach = std::fabs(x[k]) + std::fabs(y[k]) + std::fabs(z[k]) + 0.0 * det;
+    flagged += (hasNormal ? 0.0 : 1.0) + (reach <= kFloatMax ? 0.0 : 1.0);
     const double inv = 1.0 / std::sqrt(hasNormal ? det : 1.0);
     const double unit = hasNormal ? inv : 0.0;
-    P[3 * i] = static_cast<float>(x[i]), P[3 * i + 1] = static_cast<float>(y[i]), P[3 * i + 2] = static_cast<float>(z[i]);
-    Nf[3 * i] = static_cast<float>(nx * unit), Nf[3 * i + 1] = static_cast<float>(ny * unit), Nf[3 * i + 2] = static_cast<float>(nz * unit);
+    fx[k] = static_cast<float>(x[k]), fy[k] = static_cast<float>(y[k]), fz[k] = static_cast<float>(z[k]);
+    fnx[k] = static_cast<float>(nx * unit), fny[k] = static_cast<float>(ny * unit), fnz[k] = static_cast<float>(nz * unit);
     if constexpr (Curvature) {
       // A pole: the cross product vanishes against the larger speed (sin t = 1e-16 at t = π
       // leaves X_v = 1e-16 R, not 0: its curvature would divide rounding by rounding).
       const double big = E > G ? E : G;
       const bool regular = det > 1e-24 * big * big;
-      flat[i - i0] = regular ? 0.0 : 1.0;
+      flagged += regular ? 0.0 : 1.0;
       const double invDet = regular ? inv * inv : 0.0;
-      const double F = xu[i] * xv[i] + yu[i] * yv[i] + zu[i] * zv[i];
-      const double L = (xuu[i] * nx + yuu[i] * ny + zuu[i] * nz) * inv;
-      const double M = (xuv[i] * nx + yuv[i] * ny + zuv[i] * nz) * inv;
-      const double N = (xvv[i] * nx + yvv[i] * ny + zvv[i] * nz) * inv;
-      const double k = (L * N - M * M) * invDet;
-      const double h = 0.5 * (E * N - 2 * F * M + G * L) * invDet;
+      const double F = xu[k] * xv[k] + yu[k] * yv[k] + zu[k] * zv[k];
+      const double L = (xuu[k] * nx + yuu[k] * ny + zuu[k] * nz) * inv;
+      const double M = (xuv[k] * nx + yuv[k] * ny + zuv[k] * nz) * inv;
+      const double N = (xvv[k] * nx + yvv[k] * ny + zvv[k] * nz) * inv;
+      const double gauss = (L * N - M * M) * invDet;
+      const double mean = 0.5 * (E * N - 2 * F * M + G * L) * invDet;
       // A near-cusp is clamped to what a float holds instead of written as ±inf.
-      H[i] = static_cast<float>(std::min(std::max(h, -3e38), 3e38));
-      K[i] = static_cast<float>(std::min(std::max(k, -3e38), 3e38));
+      H[k] = static_cast<float>(std::min(std::max(mean, -3e38), 3e38));
+      K[k] = static_cast<float>(std::min(std::max(gauss, -3e38), 3e38));
     }
   }
-  for (size_t i = i0; i < i1; ++i) f.poles += pole[i - i0] != 0.0;
-  for (size_t i = i0; i < i1 && f.outOfRange < 0; ++i)
-    if (bad[i - i0] != 0.0) f.outOfRange = static_cast<long>(i);
-  if constexpr (Curvature)
-    for (size_t i = i0; i < i1; ++i) f.degenerate += flat[i - i0] != 0.0;
+  interleave3(fx, fy, fz, P, len);
+  interleave3(fnx, fny, fnz, Nf, len);
+  return flagged != 0;
 }
 
 }  // namespace
 
+PDESURF_VECTOR_CLONES
 void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
-  const size_t m = row.d[0][0].size();
+  const size_t m = row.count;
   f.poles = f.degenerate = 0;
   f.outOfRange = -1;
   const bool curvature = H && K && row.quantities == 6;
-  for (size_t i0 = 0; i0 < m; i0 += 256) {
-    const size_t i1 = std::min(m, i0 + 256);
-    if (curvature)
-      frameChunk<true>(row, f, P, N, H, K, i0, i1);
-    else
-      frameChunk<false>(row, f, P, N, H, K, i0, i1);
+  for (size_t i0 = 0; i0 < m; i0 += kChunk) {
+    const size_t len = std::min(m - i0, kChunk);
+    const RowSlice s(row, i0, curvature);
+    const bool flagged = curvature ? frameChunk<true>(s, len, P + 3 * i0, N + 3 * i0, H + i0, K + i0)
+                                     : frameChunk<false>(s, len, P + 3 * i0, N + 3 * i0, nullptr, nullptr);
+    if (!flagged) continue;
+    for (size_t k = 0; k < len; ++k) {  // rare: count and locate
+      const unsigned p = pointFlags(s, k, curvature);
+      f.poles += (p & kPole) != 0;
+      f.degenerate += (p & kDegenerate) != 0;
+      if ((p & kOutOfRange) && f.outOfRange < 0) f.outOfRange = static_cast<long>(i0 + k);
+    }
   }
 }
 

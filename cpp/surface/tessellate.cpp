@@ -109,17 +109,18 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
   std::vector<size_t> poles;
   const size_t w = static_cast<size_t>(nu) + 1;
   RowFrame frame;
-  combineRows(t, [&](int j, const GridRow& row) {
-    const size_t first = static_cast<size_t>(j) * w;
+  // Pieces of 256 points: combined and framed while they are in L1.
+  combineRowPieces(t, 256, [&](int j, size_t i0, const GridRow& row) {
+    const size_t first = static_cast<size_t>(j) * w + i0;
     float* q = nrm + 3 * first;
     if (curvature)
       frameRow(row, pos + 3 * first, q, frame, m.meanCurvature.data() + first, m.gaussCurvature.data() + first);
     else
       frameRow(row, pos + 3 * first, q, frame);
     m.degenerateVertices += frame.degenerate;
-    if (frame.outOfRange >= 0) outOfRange(t, frame.outOfRange, j);
-    if (frame.poles > 0)  // rare: find the pole vertices of this row again
-      for (size_t i = 0; i < w; ++i)
+    if (frame.outOfRange >= 0) outOfRange(t, i0 + frame.outOfRange, j);
+    if (frame.poles > 0)  // rare: find the pole vertices of this piece again
+      for (size_t i = 0; i < row.count; ++i)
         if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(first + i);
   });
   repairPoleNormals(poles, nu, nv, m);

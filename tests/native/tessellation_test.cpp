@@ -1,0 +1,113 @@
+// The vectorised tessellation (surface/row_frame.cpp, pieces of 256 points, xyz interleaved
+// four points at a time) against point-by-point evaluation in double: every example's
+// patches, grids whose rows end inside a piece and inside a group of four, with and without
+// curvature; and the first out-of-range point found in a later piece.
+#include <doctest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "common/errors.hpp"
+#include "scene/scene.hpp"
+#include "surface/curvature.hpp"
+#include "surface/mesh.hpp"
+#include "test_util.hpp"
+
+using namespace pdesurf;
+using namespace pdesurf::testing;
+using json = nlohmann::json;
+
+namespace {
+
+struct Worst {
+  double position = 0, normal = 0, curvature = 0;
+  long checkedNormals = 0, checkedCurvatures = 0;
+};
+
+// Compares two meshes of one grid, without and with curvature, with the surface at the grid
+// points (the tabulation's own u, v).
+void compare(const SeparableSurface& s, const Mesh& plain, const Mesh& m, Worst& w) {
+  for (int j = 0; j <= m.nv; ++j)
+    for (int i = 0; i <= m.nu; ++i) {
+      const double u = i == m.nu ? s.u1 : s.u0 + (s.u1 - s.u0) * i / m.nu;
+      const double v = j == m.nv ? s.v1 : s.v0 + (s.v1 - s.v0) * j / m.nv;
+      const size_t k = static_cast<size_t>(j) * (m.nu + 1) + i;
+      const Eigen::Vector3d X = evalPoint(s, u, v), Xu = evalPoint(s, u, v, 1, 0), Xv = evalPoint(s, u, v, 0, 1);
+      for (const Mesh* mesh : {&plain, &m}) {
+        const Eigen::Vector3d P(mesh->positions[3 * k], mesh->positions[3 * k + 1], mesh->positions[3 * k + 2]);
+        // A float holds X to 2^-24 relative; the sums may differ from evalPoint's by rounding.
+        w.position = std::max(w.position, (P - X).norm() / (1 + X.norm()));
+      }
+      const Eigen::Vector3d cross = Xu.cross(Xv);
+      // Clear of poles (where the vertex borrows a neighbour's normal) and near-poles.
+      if (cross.squaredNorm() > 1e-12 * Xu.squaredNorm() * Xv.squaredNorm()) {
+        for (const Mesh* mesh : {&plain, &m}) {
+          const Eigen::Vector3d N(mesh->normals[3 * k], mesh->normals[3 * k + 1], mesh->normals[3 * k + 2]);
+          w.normal = std::max(w.normal, (N - cross.normalized()).norm());
+          ++w.checkedNormals;
+        }
+        const Curvature c = curvatureAt(Xu, Xv, evalPoint(s, u, v, 2, 0), evalPoint(s, u, v, 1, 1), evalPoint(s, u, v, 0, 2));
+        w.curvature = std::max(w.curvature, std::abs(m.meanCurvature[k] - c.H) / (1 + std::abs(c.H)));
+        w.curvature = std::max(w.curvature, std::abs(m.gaussCurvature[k] - c.K) / (1 + std::abs(c.K)));
+        ++w.checkedCurvatures;
+      }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("tessellation: positions, normals and curvature agree with point evaluation, every example, odd grids") {
+  const json index = json::parse(readText(examplePath("index.json")));
+  // Rows of 2 points; of 6 (a group of four and two); of 263 (a piece of 256, a group of four
+  // and three).
+  const int grids[][2] = {{1, 1}, {5, 2}, {262, 1}};
+  Worst w;
+  int meshes = 0;
+  // Under ASan and in wasm (the expression walker is 3-10x slower there), every third example.
+#if defined(__EMSCRIPTEN__)
+  const int stride = 3;
+#else
+  const int stride = kTimeScale > 1 ? 3 : 1;
+#endif
+  int n = 0;
+  for (const auto& e : index["examples"]) {
+    if (n++ % stride != 0) continue;
+    const std::string file = e["file"];
+    for (const SolvedPatch& sp : solveScene(parseScene(readText(examplePath(file))))) {
+      for (const auto& g : grids) {
+        Mesh plain, m;
+        // Twice into one mesh: the reused path must overwrite everything it wrote.
+        tessellateInto(sp.surface, g[1], g[0], m, false);
+        tessellateInto(sp.surface, g[0], g[1], m, true);
+        tessellateInto(sp.surface, g[0], g[1], plain, false);
+        compare(sp.surface, plain, m, w);
+        meshes += 2;
+      }
+    }
+  }
+  MESSAGE(meshes << " meshes; worst position " << w.position << ", normal " << w.normal << ", curvature " << w.curvature << " ("
+                 << w.checkedNormals << " normals, " << w.checkedCurvatures << " curvatures)");
+  CHECK(meshes > 200 / stride);
+  CHECK(w.checkedNormals > 100000 / stride);
+  CHECK(w.position < 1e-6);
+  CHECK(w.normal < 1e-5);
+  CHECK(w.curvature < 1e-4);
+}
+
+TEST_CASE("tessellation: the first point beyond a float is named, also in a later piece") {
+  // x = exp(100 t) passes 3.4e38 at t = ln(3.4028e38) / 100 = 0.88722: point 888 of 1001,
+  // in the fourth piece of 256.
+  auto surfaceUpTo = [](const char* t1) {
+    const json scene = {{"format", "pdesurf-scene"},
+                        {"version", 3},
+                        {"patches",
+                         {{{"name", "s"}, {"kind", "surface"}, {"x", "exp(100*t)"}, {"y", "cos(v)"}, {"z", "sin(v)"},
+                           {"t_range", json::array({0, t1})}, {"v_range", json::array({0, "2*pi"})}}}}};
+    return solveScene(parseScene(scene.dump())).at(0).surface;
+  };
+  Mesh m;
+  CHECK_THROWS_WITH_AS(tessellateInto(surfaceUpTo("1"), 1000, 4, m),
+                       "the surface at (t, v) = (0.888000, 0.000000) is beyond what a float holds (|x| > 3.4e38) or not finite", Error);
+  tessellateInto(surfaceUpTo("0.887"), 1000, 4, m);  // every point fits, the last barely
+  CHECK(m.positions[3 * 1000] > 3e38f);
+}
