@@ -1,12 +1,14 @@
 #!/usr/bin/env node
 // Benchmark (not a test) of the page in headless Chromium: the cold start of the production
-// page (navigation to the first surface, cache cleared, median of 5) with the bytes it moves,
-// and the page path of a re-solve (slider edit to drawn: worker solve, transfer, in-place
+// page as a first visit sees it (a fresh browser per load, navigation to the first frame that
+// shows the surface, median of 5) side by side with a bare three.js page (bench/pages/: one
+// lit sphere, three.js unbundled), measured alternately by the same code; and the page path of a re-solve (slider edit to drawn: worker solve, transfer, in-place
 // attribute update, render) against the worker's own solve time, at 64², 256² and 1024²; and
 // the frames painted while a surface is dragged with the placement gizmo and its fillet
 // re-solves live (ref-sphere-fillet at 64², one pointer move per frame).
 // Run by scripts/bench after the builds; needs build/web (scripts/build-web.mjs).
-import { startHarness, coldStart } from '../tests/browser/harness.mjs';
+import { startHarness } from '../tests/browser/harness.mjs';
+import { firstVisit } from '../tests/browser/first-visit.mjs';
 import { dragSurface, orbitDrag } from '../tests/browser/gizmo-drag.mjs';
 
 const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
@@ -28,10 +30,18 @@ async function pagePath(page, n, runs = n > 512 ? 5 : 9) {
 
 const h = await startHarness();
 try {
-  const colds = [];
-  for (let k = 0; k < 5; k++) colds.push((await coldStart(h, `${h.base}/app/#example=you2004-fig2a`)).ms);
-  console.log(`page (headless Chromium, SwiftShader): cold start of /app/ to the first surface, median of 5: ${median(colds).toFixed(0)} ms` +
-    ` (${colds.map((x) => x.toFixed(0)).join(', ')})`);
+  const bare = [];
+  const app = [];
+  for (let k = 0; k < 5; k++) {
+    bare.push(await firstVisit(`${h.base}/bench/pages/bare-three.html`, () => window.__bareFirstFrameAt));
+    app.push(await firstVisit(`${h.base}/app/#example=you2004-fig2a`, () => window.__pdesurf?.firstFrameAt));
+  }
+  const ms = (runs, key = 'frameMs') => runs.map((r) => r[key].toFixed(0)).join(', ');
+  const [b, a] = [median(bare.map((r) => r.frameMs)), median(app.map((r) => r.frameMs))];
+  console.log('first visit (headless Chromium, SwiftShader; a fresh browser per load): navigation to the first frame drawn, median of 5');
+  console.log(`  bare three.js page (one lit sphere): ${b.toFixed(0)} ms (${ms(bare)})`);
+  console.log(`  /app/#example=you2004-fig2a:        ${a.toFixed(0)} ms (${ms(app)}); the solve drawn (readyAt) at ${median(app.map((r) => r.readyMs)).toFixed(0)} ms`);
+  console.log(`  ratio ${(a / b).toFixed(2)} (medians; per pair ${app.map((r, k) => (r.frameMs / bare[k].frameMs).toFixed(2)).join(', ')})`);
   const page = await h.open('/app/#example=you2004-fig4a');
   console.log('\nre-solve of you2004-fig4a (3 patches), slider edit to drawn [ms, median of 9; 5 at 1024²]');
   console.log(`${'grid'.padEnd(10)} ${'page path'.padStart(10)} ${'worker'.padStart(10)} ${'ratio'.padStart(8)}`);

@@ -41,8 +41,10 @@ function sendText(res, status, text, extraHeaders = {}) {
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
 // examples it fetches, the docs its help links, and the npm packages it loads (pako: the
-// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js).
-const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako'], ['node_modules', 'rhino3dm']];
+// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js), and the benchmark's
+// bare three.js page (bench/pages/, scripts/bench-page.mjs).
+const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako'], ['node_modules', 'rhino3dm'],
+  ['bench', 'pages']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
 const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;

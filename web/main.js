@@ -16,7 +16,8 @@ import { createHelpOverlay } from './ui/help-overlay.js';
 import { watchNumberControls } from './ui/number-access.js';
 import { installShortcuts } from './keyboard-shortcuts.js';
 import { createSceneState } from './state/scene-state.js';
-import { loadExampleIndex } from './state/examples.js';
+import { loadExampleIndex, fetchExampleAhead } from './state/examples.js';
+import { readHash } from './state/hash.js';
 import { installTestHooks } from './test-hooks.js';
 import { createBezierWiring } from './bezier-wiring.js';
 import { createShareWiring } from './share-wiring.js';
@@ -40,6 +41,8 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
   analysis: () => analysis?.state() ?? null,
   cameraState: () => viewer?.cameraState() ?? null,
+  // Draw calls of the last frame and shader programs built so far (a cold start's cost).
+  renderInfo: () => viewer && { calls: viewer.renderer.info.render.calls, programs: viewer.renderer.info.programs.length },
   patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
   vertexWorld: (patch, k) => viewer.vertexWorld(patch, k),
@@ -64,15 +67,28 @@ async function start() {
     onError: (...args) => relay.error(...args),
     onBusy: (ms) => status.busy(ms),
   });
+  // The index, then the example the hash names, are fetched while the view starts (the
+  // index's preload is already under way): the first solve then leaves as soon as the page
+  // can send it.
+  const examplesLoading = loadExampleIndex();
+  const exampleAhead = examplesLoading.then((list) => {
+    const h = readHash();
+    return h.kind === 'state' ? null : fetchExampleAhead(list.find((e) => e.id === h.id) || list[0]);
+  }, () => {}); // reported below
   try {
-    viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers);
+    viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
+      onFirstSurfaceFrame: (at) => { hooks.firstFrameAt = at; },
+    });
   } catch (err) {
     fail(new Error(`cannot start WebGL: ${err.message}`));
     return;
   }
   let examples;
   try {
-    examples = await loadExampleIndex();
+    examples = await examplesLoading;
+    // Waited for here, while the page is still light: the wiring below, the opening and the
+    // first solve's request then run in one task, before the first layout of the panel.
+    await exampleAhead;
   } catch (err) {
     fail(err);
     return;

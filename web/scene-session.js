@@ -49,15 +49,19 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   }
 
   // Shared by examples, links, files and built scenes: the scene becomes the page state.
-  function showScene(scene, { exampleId = null, title, camera = null }) {
+  // solveAtOnce: the request leaves before the panel and the gallery are built, not at the
+  // next frame (an example or a link: nothing follows that could change it; on a cold
+  // start the worker waits idle and that frame is the page's first layout).
+  function showScene(scene, { exampleId = null, title, camera = null, solveAtOnce = false }) {
     sceneToken++;
     parts.share.opening();
     opening = true;
     state.setScene(scene, exampleId);
     doc.reset();
     hooks.exampleId = exampleId;
+    if (solveAtOnce) scheduler.now();
     present(scene, exampleId, title, camera);
-    scheduler.request();
+    if (!solveAtOnce) scheduler.request();
     parts.history.opened();
     return sceneToken;
   }
@@ -110,7 +114,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     Object.assign(state.grid, DEFAULT_GRID);
     panel.refreshGrid();
     const src = entry.source ? [entry.source.paper, entry.source.figure].filter(Boolean).join(', ') : '';
-    showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title });
+    showScene(scene, { exampleId: entry.id, title: src ? `${entry.title} (${src})` : entry.title, solveAtOnce: true });
   }
 
   // A link that cannot be read says why and opens the default example: never a blank page.
@@ -131,7 +135,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     panel.refreshGrid();
     linkPending = true;
     const title = typeof linked.scene.title === 'string' && linked.scene.title ? linked.scene.title : 'untitled scene';
-    showScene(linked.scene, { title: `${title} (shared link)`, camera: linked.camera || null });
+    showScene(linked.scene, { title: `${title} (shared link)`, camera: linked.camera || null, solveAtOnce: true });
   }
 
   function openFromHash() {

@@ -19,7 +19,8 @@ export function checksumOf(arrays) {
 export function installTestHooks(getPositionArrays, getCamera = () => null, extras = {}) {
   const hooks = {
     ready: false, // true once the first mesh is drawn
-    readyAt: null, // performance.now() then: the cold start
+    readyAt: null, // performance.now() then, from navigation start
+    firstFrameAt: null, // performance.now() once the first frame showing a surface is presented
     lastSolve: null, // { pageMs, workerMs, nu, nv } of the latest drawn solve
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve

@@ -14,9 +14,9 @@ export const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '
 export const ROOT = process.env.PDESURF_TEST_ROOT ? path.resolve(process.env.PDESURF_TEST_ROOT) : REPO;
 const WASM_DIR = process.env.PDESURF_WASM_DIR || path.join(REPO, 'build', 'wasm');
 export const OUT_DIR = path.join(REPO, 'build', 'browser');
-const CHROMIUM = '/usr/bin/chromium';
+export const CHROMIUM = '/usr/bin/chromium';
 export const BACKGROUND = [0x20, 0x24, 0x2b]; // web/viewer/viewer.js BACKGROUND
-const ARGS = [
+export const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
   '--use-gl=angle', '--use-angle=swiftshader',
@@ -38,7 +38,7 @@ export async function startHarness() {
   const { chromium } = await import('playwright-core');
   // A persistent context is how playwright takes --user-data-dir.
   const context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: CHROMIUM, args: ARGS, headless: true, viewport: { width: 1280, height: 800 },
+    executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true, viewport: { width: 1280, height: 800 },
   });
   const problems = []; // console errors, page errors, failed requests
   let closingAll = false;

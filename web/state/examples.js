@@ -6,7 +6,7 @@ const EXAMPLES_BASE = '/examples/';
 async function fetchJson(url) {
   let res;
   try {
-    res = await fetch(url, { cache: 'no-cache' });
+    res = await fetch(url); // the page preloads the index and the first example
   } catch (err) {
     throw new Error(`cannot fetch ${url}: ${err.message}`);
   }
@@ -32,13 +32,32 @@ export async function loadExampleIndex() {
   });
 }
 
+// One scene fetched ahead (the one a cold start opens): taken by its first load.
+let ahead = null; // { file, scene: Promise }
+
+/**
+ * Starts fetching the scene of `entry` now (the page's first example, while the view is
+ * built): loadExampleScene(entry) then finds it under way or done. Returns a promise that
+ * settles with the fetch and never rejects (the load that takes it reports failures).
+ */
+export function fetchExampleAhead(entry) {
+  if (!safeFileName(entry.file)) return Promise.resolve();
+  const scene = fetchJson(EXAMPLES_BASE + entry.file);
+  ahead = { file: entry.file, scene };
+  return scene.then(() => {}, () => {});
+}
+
+// Files are plain relative names inside examples/; anything else is refused.
+const safeFileName = (file) => /^[A-Za-z0-9_\-./]+$/.test(file) && !file.split('/').includes('..') && !file.startsWith('/');
+
 /** The scene object of one catalogue entry (a fresh object: it becomes page state). */
 export async function loadExampleScene(entry) {
-  // Files are plain relative names inside examples/; anything else is refused.
-  if (!/^[A-Za-z0-9_\-./]+$/.test(entry.file) || entry.file.split('/').includes('..') || entry.file.startsWith('/')) {
+  if (!safeFileName(entry.file)) {
     throw new Error(`example "${entry.id}": refusing file name ${JSON.stringify(entry.file)}`);
   }
-  const scene = await fetchJson(EXAMPLES_BASE + entry.file);
+  let pending = null;
+  if (ahead && ahead.file === entry.file) [pending, ahead] = [ahead.scene, null];
+  const scene = await (pending || fetchJson(EXAMPLES_BASE + entry.file));
   if (!scene || typeof scene !== 'object' || Array.isArray(scene)) {
     throw new Error(`${entry.file} does not hold a scene object`);
   }

@@ -4,7 +4,7 @@
 // TransformControls, and dragging the gizmo reports the new position on every move.
 // OrbitControls pauses while the gizmo is dragged, so the camera stays put.
 import * as THREE from 'three';
-import { TransformControls } from 'three/addons/controls/TransformControls.js';
+import { lazyTransformControls } from './lazy-transform-controls.js';
 
 const PICK_PIXELS = 10; // how near a click must be to a point
 const CLICK_SLOP = 4; // pixels a press may travel and still count as a click, not an orbit
@@ -27,28 +27,27 @@ export function createControlPointEditor({ scene, camera, dom, orbit, layer, ren
   marker.visible = false;
   handle.add(marker);
 
-  const gizmo = new TransformControls(camera, dom);
-  gizmo.setSize(0.75);
-  gizmo.enabled = false;
-  scene.add(gizmo.getHelper());
-  gizmo.addEventListener('change', render);
-  gizmo.addEventListener('dragging-changed', (e) => {
-    orbit.enabled = !e.value;
-  });
-
   let active = null; // { patch, i, j }
-  gizmo.addEventListener('objectChange', () => {
-    if (active) onMove(active.patch, active.i, active.j, handle.position.toArray());
+  const controls = lazyTransformControls({
+    scene, camera, dom, orbit, render,
+    setUp(gizmo) {
+      gizmo.setSize(0.75);
+      gizmo.addEventListener('objectChange', () => {
+        if (active) onMove(active.patch, active.i, active.j, handle.position.toArray());
+      });
+    },
   });
 
   // Put the marker and the gizmo on the active point (not mid-drag: the gizmo owns it then).
   function place() {
     if (!active || !layer.initialNet(active.patch)) {
       marker.visible = false;
-      gizmo.detach();
-      gizmo.enabled = false; // no pointer capture or hover work while nothing is edited
+      const idle = controls.peek();
+      idle?.detach();
+      if (idle) idle.enabled = false; // no pointer capture or hover work while nothing is edited
       return;
     }
+    const gizmo = controls.get();
     if (!gizmo.dragging) handle.position.fromArray(pointOf(active.patch, active.i, active.j));
     marker.visible = true;
     gizmo.enabled = true;
@@ -77,7 +76,7 @@ export function createControlPointEditor({ scene, camera, dom, orbit, layer, ren
   let press = null;
   dom.addEventListener('pointerdown', (e) => {
     // A press on the gizmo (its hover axis is set) drags it; it is not a pick.
-    press = active && e.button === 0 && gizmo.axis === null ? { x: e.clientX, y: e.clientY } : null;
+    press = active && e.button === 0 && (controls.peek()?.axis ?? null) === null ? { x: e.clientX, y: e.clientY } : null;
   });
   dom.addEventListener('pointerup', (e) => {
     if (press && active && Math.hypot(e.clientX - press.x, e.clientY - press.y) <= CLICK_SLOP) pick(e.clientX, e.clientY);
@@ -104,7 +103,7 @@ export function createControlPointEditor({ scene, camera, dom, orbit, layer, ren
 
     /** Whether the gizmo is being dragged now. */
     dragging() {
-      return gizmo.dragging;
+      return controls.peek()?.dragging ?? false;
     },
   };
 }

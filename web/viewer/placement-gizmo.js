@@ -8,7 +8,7 @@
 // solve); at the release onCommit(placement) is the one step to keep. Orbiting pauses
 // during a drag. Scaling is uniform: the factor of the axis dragged applies to all three.
 import * as THREE from 'three';
-import { TransformControls } from 'three/addons/controls/TransformControls.js';
+import { lazyTransformControls } from './lazy-transform-controls.js';
 
 export const MODES = ['translate', 'rotate', 'scale'];
 export const IDENTITY = Object.freeze({ translate: [0, 0, 0], rotate: [0, 0, 0], scale: 1 });
@@ -91,13 +91,7 @@ export function createPlacementGizmo({ scene, camera, dom, orbit, render }) {
   scene.add(handle);
   const local = new THREE.Vector3();
 
-  const gizmo = new TransformControls(camera, dom);
-  gizmo.enabled = false;
-  scene.add(gizmo.getHelper());
-  gizmo.addEventListener('change', render);
-  gizmo.addEventListener('dragging-changed', (e) => {
-    orbit.enabled = !e.value;
-  });
+  const controls = lazyTransformControls({ scene, camera, dom, orbit, render, setUp: listen });
 
   let target = null; // { name, onDrag, onCommit }
   let start = null; // the placement when the drag began
@@ -111,28 +105,30 @@ export function createPlacementGizmo({ scene, camera, dom, orbit, render }) {
     return normalizePlacement({ translate: t.toArray(), rotate: [e.x, e.y, e.z].map(THREE.MathUtils.radToDeg), scale: s });
   }
 
-  gizmo.addEventListener('mouseDown', () => {
-    start = current;
-  });
-  gizmo.addEventListener('objectChange', () => {
-    if (!target) return;
-    if (gizmo.mode === 'scale') {
-      // Uniform: the first axis in the handle's name (X, Y, Z, XY…, XYZ) gives the factor.
-      const axis = (gizmo.axis || 'X').match(/[XYZ]/)?.[0] || 'X';
-      const s = Math.max(MIN_SCALE, Math.abs(handle.scale[axis.toLowerCase()]));
-      handle.scale.setScalar(s);
-      handle.updateMatrixWorld();
-      render();
-    }
-    current = fromHandle();
-    target.onDrag(current, target.name);
-  });
-  gizmo.addEventListener('mouseUp', () => {
-    if (!target || !start) return;
-    const was = start;
-    start = null;
-    if (JSON.stringify(current) !== JSON.stringify(was)) target.onCommit(current, target.name);
-  });
+  function listen(gizmo) {
+    gizmo.addEventListener('mouseDown', () => {
+      start = current;
+    });
+    gizmo.addEventListener('objectChange', () => {
+      if (!target) return;
+      if (gizmo.mode === 'scale') {
+        // Uniform: the first axis in the handle's name (X, Y, Z, XY…, XYZ) gives the factor.
+        const axis = (gizmo.axis || 'X').match(/[XYZ]/)?.[0] || 'X';
+        const s = Math.max(MIN_SCALE, Math.abs(handle.scale[axis.toLowerCase()]));
+        handle.scale.setScalar(s);
+        handle.updateMatrixWorld();
+        render();
+      }
+      current = fromHandle();
+      target.onDrag(current, target.name);
+    });
+    gizmo.addEventListener('mouseUp', () => {
+      if (!target || !start) return;
+      const was = start;
+      start = null;
+      if (JSON.stringify(current) !== JSON.stringify(was)) target.onCommit(current, target.name);
+    });
+  }
 
   return {
     /**
@@ -151,6 +147,7 @@ export function createPlacementGizmo({ scene, camera, dom, orbit, render }) {
       handle.updateMatrixWorld();
       target = { name, onDrag, onCommit };
       start = null;
+      const gizmo = controls.get();
       gizmo.enabled = true;
       gizmo.attach(handle);
       render();
@@ -159,8 +156,9 @@ export function createPlacementGizmo({ scene, camera, dom, orbit, render }) {
     detach() {
       target = null;
       start = null;
-      gizmo.detach();
-      gizmo.enabled = false;
+      const gizmo = controls.peek();
+      gizmo?.detach();
+      if (gizmo) gizmo.enabled = false;
       orbit.enabled = true;
       render();
     },
@@ -168,21 +166,21 @@ export function createPlacementGizmo({ scene, camera, dom, orbit, render }) {
     /** 'translate' | 'rotate' | 'scale'. */
     setMode(mode) {
       if (!MODES.includes(mode)) throw new Error(`unknown gizmo mode ${JSON.stringify(mode)}`);
-      gizmo.setMode(mode);
+      controls.get().setMode(mode);
       render();
     },
 
-    mode: () => gizmo.mode,
+    mode: () => controls.peek()?.mode ?? 'translate',
     /** The surface the gizmo is on, or null. */
     attached: () => (target ? target.name : null),
     /** The placement the gizmo shows now. */
     placement: () => (current ? { ...current, translate: [...current.translate], rotate: [...current.rotate] } : null),
     /** Where the gizmo is (world) and its hovered handle ('X', 'XY', 'XYZE'…, or null). */
     pivot: () => handle.position.toArray(),
-    axis: () => gizmo.axis,
-    dragging: () => gizmo.dragging,
+    axis: () => controls.peek()?.axis ?? null,
+    dragging: () => controls.peek()?.dragging ?? false,
     /** Whether the pointer is on the gizmo or dragging it (other tools leave such presses alone). */
-    busy: () => Boolean(target) && (gizmo.dragging || gizmo.axis !== null),
+    busy: () => Boolean(target) && (controls.peek().dragging || controls.peek().axis !== null),
 
     previewMesh,
     clearPreview,

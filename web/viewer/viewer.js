@@ -19,11 +19,17 @@ export const BACKGROUND = 0x20242b;
 /**
  * container: the element to draw into. bezierEditing: { pointOf(patch, i, j) -> [x, y, z],
  * onPick(patch, i, j), onMove(patch, i, j, [x, y, z]) } for the control-point editor.
+ * onFirstSurfaceFrame(ms): called once, when the first frame showing a surface is presented.
  */
-export function createViewer(container, bezierEditing) {
+export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = null } = {}) {
   const renderer = new THREE.WebGLRenderer({ antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(BACKGROUND, 1);
+  // Hidden and not drawn until the first solve is shown (the page's background is the
+  // same colour): a cold start's first frames then wait for no shader compile, which the
+  // GPU process does meanwhile (see the warm-up below).
+  renderer.domElement.style.visibility = 'hidden';
+  let shown = false;
   container.appendChild(renderer.domElement);
 
   const scene = new THREE.Scene();
@@ -67,13 +73,20 @@ export function createViewer(container, bezierEditing) {
   // full and the compositor waits for all of them: a solve drawn during a gizmo drag cost
   // 0.5-2 s of main thread in headless Chromium before.
   let frame = 0;
+  let surfaceDrawn = false;
   function draw() {
     frame = 0;
     renderer.render(scene, camera);
+    if (!surfaceDrawn && surfaces.children.length > 0) {
+      surfaceDrawn = true;
+      // The next frame's callback runs once this frame has gone to the compositor: what a
+      // visitor sees first (scripts/bench-page.mjs, the cold start).
+      requestAnimationFrame(() => onFirstSurfaceFrame?.(performance.now()));
+    }
   }
   function render() {
     camera.updateMatrixWorld(); // hit tests and screenOf read the camera before the frame
-    if (!frame) frame = requestAnimationFrame(draw);
+    if (shown && !frame) frame = requestAnimationFrame(draw);
   }
 
   function resize() {
@@ -88,12 +101,12 @@ export function createViewer(container, bezierEditing) {
   new ResizeObserver(resize).observe(container);
   resize();
 
-  // Compile the patch materials' shaders now, while the first solve runs in the worker,
-  // instead of in the first frame that shows a surface.
+  // Compile the patch materials' shaders now (with the scene's lights, which are part of a
+  // program), while the first solve runs in the worker, instead of in the first frame that
+  // shows a surface; nothing else: the other materials (overlays, markers) wait for use.
   const warmUp = new THREE.Group();
   warmUp.add(...shaderWarmUpMeshes());
-  scene.add(warmUp);
-  renderer.compileAsync(scene, camera).catch(() => {}).finally(() => scene.remove(warmUp));
+  renderer.compileAsync(warmUp, camera, scene).catch(() => {});
 
   return {
     renderer,
@@ -112,6 +125,10 @@ export function createViewer(container, bezierEditing) {
      * come back on the same grid (a slider drag), else new meshes.
      */
     setPatches(patches) {
+      if (!shown) {
+        shown = true;
+        renderer.domElement.style.visibility = '';
+      }
       const meshes = surfaces.children;
       if (meshes.length === patches.length && patches.every((p, k) => fitsMesh(meshes[k], p))) {
         patches.forEach((p, k) => updateMeshFromPatch(meshes[k], p));

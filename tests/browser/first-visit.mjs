@@ -1,0 +1,39 @@
+// A first visit, measured as a visitor sees it: a fresh Chromium with a new profile per load
+// (no HTTP cache, no compiled-code or shader cache), navigation to the first frame that
+// shows the content. scripts/bench-page.mjs (the cold start against a bare three.js page)
+// and tests/browser/first-visit.test.mjs.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { CHROMIUM, CHROMIUM_ARGS } from './harness.mjs';
+
+/**
+ * Loads `url` in a browser of its own and waits until `frameMark()` (run in the page, e.g.
+ * () => window.__pdesurf?.firstFrameAt) is a number: { frameMs, readyMs (the page's
+ * window.__pdesurf.readyAt, if any), resources: { path: responseEnd ms }, info (the page's
+ * window.__pdesurf.renderInfo(), if any), problems: [console errors, page errors] }.
+ */
+export async function firstVisit(url, frameMark, { viewport = { width: 1280, height: 800 } } = {}) {
+  const { chromium } = await import('playwright-core');
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-first-visit-'));
+  const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true, viewport });
+  try {
+    const page = context.pages()[0] || (await context.newPage());
+    const problems = [];
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+    page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+    await page.goto(url);
+    await page.waitForFunction(frameMark, null, { timeout: 60_000 });
+    const frameMs = await page.evaluate(frameMark);
+    const seen = await page.evaluate((ms) => ({
+      frameMs: ms,
+      readyMs: window.__pdesurf?.readyAt ?? null,
+      resources: Object.fromEntries(performance.getEntriesByType('resource').map((r) => [new URL(r.name).pathname, r.responseEnd])),
+      info: window.__pdesurf?.renderInfo?.() ?? null,
+    }), frameMs);
+    return { ...seen, problems };
+  } finally {
+    await context.close();
+    fs.rmSync(profile, { recursive: true, force: true });
+  }
+}
