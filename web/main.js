@@ -16,7 +16,7 @@ import { createHelpOverlay } from './ui/help-overlay.js';
 import { watchNumberControls } from './ui/number-access.js';
 import { installShortcuts } from './keyboard-shortcuts.js';
 import { createSceneState } from './state/scene-state.js';
-import { loadExampleIndex, fetchExampleAhead } from './state/examples.js';
+import { loadExamplesAhead } from './state/examples.js';
 import { readHash } from './state/hash.js';
 import { installTestHooks } from './test-hooks.js';
 import { createBezierWiring } from './bezier-wiring.js';
@@ -67,14 +67,8 @@ async function start() {
     onError: (...args) => relay.error(...args),
     onBusy: (ms) => status.busy(ms),
   });
-  // The index, then the example the hash names, are fetched while the view starts (the
-  // index's preload is already under way): the first solve then leaves as soon as the page
-  // can send it.
-  const examplesLoading = loadExampleIndex();
-  const exampleAhead = examplesLoading.then((list) => {
-    const h = readHash();
-    return h.kind === 'state' ? null : fetchExampleAhead(list.find((e) => e.id === h.id) || list[0]);
-  }, () => {}); // reported below
+  // Fetched while the view starts: the first solve then leaves as soon as the page can send it.
+  const loading = loadExamplesAhead(readHash());
   try {
     viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
       onFirstSurfaceFrame: (at) => { hooks.firstFrameAt = at; },
@@ -85,10 +79,10 @@ async function start() {
   }
   let examples;
   try {
-    examples = await examplesLoading;
+    examples = await loading.index;
     // Waited for here, while the page is still light: the wiring below, the opening and the
     // first solve's request then run in one task, before the first layout of the panel.
-    await exampleAhead;
+    await loading.scene;
   } catch (err) {
     fail(err);
     return;

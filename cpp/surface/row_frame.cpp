@@ -10,7 +10,7 @@ namespace pdesurf {
 
 namespace {
 
-constexpr size_t kChunk = 256;
+constexpr size_t kChunk = kFramePiece;
 constexpr double kFloatMax = 3.4028234663852886e38, kDoubleMax = 1.7976931348623157e308;
 constexpr unsigned kPole = 1, kOutOfRange = 2, kDegenerate = 4;
 

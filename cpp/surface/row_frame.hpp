@@ -6,6 +6,10 @@
 
 namespace pdesurf {
 
+// Points framed per vector pass; tessellation combines rows in pieces of this size so a
+// piece is framed while it is still in L1.
+constexpr size_t kFramePiece = 256;
+
 struct RowFrame {
   int poles = 0;       // points where |X_u × X_v|² ≤ 1e-24 E G: normal (0, 0, 0)
   int degenerate = 0;  // points where |X_u × X_v|² ≤ 1e-24 max(E, G)²: no curvature (H = K = 0)

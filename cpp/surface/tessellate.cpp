@@ -109,8 +109,7 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
   std::vector<size_t> poles;
   const size_t w = static_cast<size_t>(nu) + 1;
   RowFrame frame;
-  // Pieces of 256 points: combined and framed while they are in L1.
-  combineRowPieces(t, 256, [&](int j, size_t i0, const GridRow& row) {
+  combineRowPieces(t, kFramePiece, [&](int j, size_t i0, const GridRow& row) {
     const size_t first = static_cast<size_t>(j) * w + i0;
     float* q = nrm + 3 * first;
     if (curvature)

@@ -2,10 +2,7 @@
 // (no HTTP cache, no compiled-code or shader cache), navigation to the first frame that
 // shows the content. scripts/bench-page.mjs (the cold start against a bare three.js page)
 // and tests/browser/first-visit.test.mjs.
-import fs from 'node:fs';
-import os from 'node:os';
-import path from 'node:path';
-import { CHROMIUM, CHROMIUM_ARGS } from './harness.mjs';
+import { launchChromium } from './harness.mjs';
 
 /**
  * Loads `url` in a browser of its own and waits until `frameMark()` (run in the page, e.g.
@@ -14,9 +11,8 @@ import { CHROMIUM, CHROMIUM_ARGS } from './harness.mjs';
  * window.__pdesurf.renderInfo(), if any), problems: [console errors, page errors] }.
  */
 export async function firstVisit(url, frameMark, { viewport = { width: 1280, height: 800 } } = {}) {
-  const { chromium } = await import('playwright-core');
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-first-visit-'));
-  const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true, viewport });
+  const browser = await launchChromium({ viewport });
+  const { context } = browser;
   try {
     const page = context.pages()[0] || (await context.newPage());
     const problems = [];
@@ -33,7 +29,6 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
     }), frameMs);
     return { ...seen, problems };
   } finally {
-    await context.close();
-    fs.rmSync(profile, { recursive: true, force: true });
+    await browser.close();
   }
 }

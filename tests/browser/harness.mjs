@@ -14,9 +14,9 @@ export const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '
 export const ROOT = process.env.PDESURF_TEST_ROOT ? path.resolve(process.env.PDESURF_TEST_ROOT) : REPO;
 const WASM_DIR = process.env.PDESURF_WASM_DIR || path.join(REPO, 'build', 'wasm');
 export const OUT_DIR = path.join(REPO, 'build', 'browser');
-export const CHROMIUM = '/usr/bin/chromium';
+const CHROMIUM = '/usr/bin/chromium';
 export const BACKGROUND = [0x20, 0x24, 0x2b]; // web/viewer/viewer.js BACKGROUND
-export const CHROMIUM_ARGS = [
+const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
   '--use-gl=angle', '--use-angle=swiftshader',
@@ -26,6 +26,23 @@ export const skip = fs.existsSync(CHROMIUM) ? false : `${CHROMIUM} is missing (a
 
 export const exampleIndex = () => JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'index.json'), 'utf8')).examples;
 
+/**
+ * Debian's Chromium with a new temporary profile (a persistent context is how playwright
+ * takes --user-data-dir): { context, close() }, close() also removing the profile.
+ */
+export async function launchChromium({ viewport = { width: 1280, height: 800 } } = {}) {
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-chromium-'));
+  const { chromium } = await import('playwright-core');
+  const context = await chromium.launchPersistentContext(userDataDir, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true, viewport });
+  return {
+    context,
+    async close() {
+      await context.close();
+      fs.rmSync(userDataDir, { recursive: true, force: true });
+    },
+  };
+}
+
 /** Start server + browser. Returns { base, problems, context, open(url) -> page, close() }. */
 export async function startHarness() {
   assert.ok(fs.existsSync(path.join(WASM_DIR, 'pdesurf.js')), `no wasm module in ${WASM_DIR}: build it first (scripts/build-wasm)`);
@@ -34,12 +51,8 @@ export async function startHarness() {
   fs.mkdirSync(OUT_DIR, { recursive: true });
   const server = await startServer({ port: 0, root: ROOT, wasmDir: WASM_DIR });
   const base = `http://127.0.0.1:${server.address().port}`;
-  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-chromium-'));
-  const { chromium } = await import('playwright-core');
-  // A persistent context is how playwright takes --user-data-dir.
-  const context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: CHROMIUM, args: CHROMIUM_ARGS, headless: true, viewport: { width: 1280, height: 800 },
-  });
+  const browser = await launchChromium();
+  const { context } = browser;
   const problems = []; // console errors, page errors, failed requests
   let closingAll = false;
   let first = context.pages()[0];
@@ -73,9 +86,8 @@ export async function startHarness() {
     },
     async close() {
       closingAll = true;
-      await context.close();
+      await browser.close();
       await new Promise((r) => server.close(r));
-      fs.rmSync(userDataDir, { recursive: true, force: true });
     },
   };
 }

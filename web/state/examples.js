@@ -36,15 +36,22 @@ export async function loadExampleIndex() {
 let ahead = null; // { file, scene: Promise }
 
 /**
- * Starts fetching the scene of `entry` now (the page's first example, while the view is
- * built): loadExampleScene(entry) then finds it under way or done. Returns a promise that
- * settles with the fetch and never rejects (the load that takes it reports failures).
+ * A cold start's fetches, begun at once (the index's preload is already under way): the
+ * catalogue, then the scene of the example `hash` (state/hash.js readHash) names, else of the
+ * first; loadExampleScene then finds that scene under way or done. { index: Promise like
+ * loadExampleIndex's, scene: Promise that settles once the scene is in and never rejects
+ * (the load that takes it reports failures) }.
  */
-export function fetchExampleAhead(entry) {
-  if (!safeFileName(entry.file)) return Promise.resolve();
-  const scene = fetchJson(EXAMPLES_BASE + entry.file);
-  ahead = { file: entry.file, scene };
-  return scene.then(() => {}, () => {});
+export function loadExamplesAhead(hash) {
+  const index = loadExampleIndex();
+  const scene = index.then((list) => {
+    if (hash.kind === 'state') return;
+    const entry = list.find((e) => e.id === hash.id) || list[0];
+    if (!safeFileName(entry.file)) return;
+    ahead = { file: entry.file, scene: fetchJson(EXAMPLES_BASE + entry.file) };
+    return ahead.scene.then(() => {}, () => {});
+  }, () => {});
+  return { index, scene };
 }
 
 // Files are plain relative names inside examples/; anything else is refused.
