@@ -71,16 +71,27 @@ export async function startHarness() {
       if (viewport) await page.setViewportSize(viewport);
       page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
       page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-      // A request the test cuts short by closing the page (a lazy module still loading, e.g. the
-      // link's deflater on a loaded machine) is the test's doing, not a failure of the page.
+      // A request the test cuts short by closing the page or sending it to another URL (a lazy
+      // module still loading, e.g. the link's deflater on a loaded machine) is the test's
+      // doing, not a failure of the page.
       let closing = false;
+      let leaving = 0;
       const closePage = page.close.bind(page);
       page.close = (...args) => { closing = true; return closePage(...args); };
+      const gotoPage = page.goto.bind(page);
+      page.goto = async (...args) => {
+        leaving++;
+        try {
+          return await gotoPage(...args);
+        } finally {
+          leaving--;
+        }
+      };
       page.on('requestfailed', (r) => {
-        if ((closing || closingAll) && r.failure()?.errorText === 'net::ERR_ABORTED') return;
+        if ((closing || closingAll || leaving > 0) && r.failure()?.errorText === 'net::ERR_ABORTED') return;
         problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`);
       });
-      await page.goto(url.startsWith('http') ? url : `${base}${url}`);
+      await gotoPage(url.startsWith('http') ? url : `${base}${url}`); // its first load is the page's own
       if (wait) await waitReady(page);
       return page;
     },
