@@ -15,6 +15,7 @@
 
 #include "analysis/join_certificate.hpp"
 #include "common/errors.hpp"
+#include "common/vector_clones.hpp"
 #include "bezier/bezier_assembly.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "methods/method.hpp"
@@ -205,26 +206,46 @@ int main() {
   const Scene scene = parseScene(readText(dir + "/you2004-fig4a.json"));
   const SeparableSurface blend = solvePatch(*scene.firstPde()).surface;
   // The floor: a memcpy of the bytes the reused path writes, positions and normals (24 per
-  // vertex; uvs and indices are written only when the grid changes).
-  std::printf("\ntessellation of you2004-fig4a's blend (new mesh: + uvs, indices; reused: positions, normals)\n");
-  std::printf("%-10s %14s %12s %14s %14s %10s\n", "grid", "new mesh [ms]", "reused [ms]", "Mvertices/s", "memcpy [ms]", "x memcpy");
-  for (int n : {64, 256, 1024}) {
-    const Mesh probe = tessellate(blend, n, n);
-    const size_t bytes = (probe.positions.size() + probe.normals.size()) * sizeof(float);
-    std::vector<char> src(bytes, 1), dst(bytes);
-    const double fresh = medianSeconds([&] { sink = tessellate(blend, n, n).vertexCount(); });
-    Mesh reused;
-    const double t = medianSeconds([&] {
-      tessellateInto(blend, n, n, reused);
-      sink = reused.vertexCount();
-    });
-    const double floor = medianSeconds([&] {
-      std::memcpy(dst.data(), src.data(), bytes);
-      sink = static_cast<size_t>(dst[bytes / 2]);
-    });
-    const double verts = static_cast<double>(probe.vertexCount());
-    std::printf("%4dx%-5d %14.3f %12.3f %14.1f %14.3f %10.1f\n", n, n, fresh * 1e3, t * 1e3, verts / t / 1e6, floor * 1e3, t / floor);
+  // vertex; uvs and indices are written only when the grid changes). Natively on a CPU with
+  // AVX2 the rows are measured twice: with the AVX2 copy of the per-vertex loops and with the
+  // baseline copy, 128 bits wide as wasm's simd128.
+  std::printf("\ntessellation of you2004-fig4a's blend (new mesh: + uvs, indices; reused: positions, normals;\n"
+              "+curvature: reused, with mean and Gaussian curvature)\n");
+  std::printf("%-8s %-10s %14s %12s %14s %16s %14s %10s\n", "vectors", "grid", "new mesh [ms]", "reused [ms]", "Mvertices/s",
+              "+curvature [ms]", "memcpy [ms]", "x memcpy");
+  std::vector<bool> copies{false};
+  if (wideVectors()) copies.push_back(true);
+  for (bool baseline : copies) {
+    useBaselineVectors(baseline);
+#ifdef __EMSCRIPTEN__
+    const char* label = "simd128";
+#else
+    const char* label = wideVectors() ? "avx2" : "sse2";
+#endif
+    for (int n : {64, 256, 1024}) {
+      const Mesh probe = tessellate(blend, n, n);
+      const size_t bytes = (probe.positions.size() + probe.normals.size()) * sizeof(float);
+      std::vector<char> src(bytes, 1), dst(bytes);
+      const double fresh = medianSeconds([&] { sink = tessellate(blend, n, n).vertexCount(); });
+      Mesh reused, curved;
+      const double t = medianSeconds([&] {
+        tessellateInto(blend, n, n, reused);
+        sink = reused.vertexCount();
+      });
+      const double withCurvature = medianSeconds([&] {
+        tessellateInto(blend, n, n, curved, true);
+        sink = curved.vertexCount();
+      });
+      const double floor = medianSeconds([&] {
+        std::memcpy(dst.data(), src.data(), bytes);
+        sink = static_cast<size_t>(dst[bytes / 2]);
+      });
+      const double verts = static_cast<double>(probe.vertexCount());
+      std::printf("%-8s %4dx%-5d %14.3f %12.3f %14.1f %16.3f %14.3f %10.1f\n", label, n, n, fresh * 1e3, t * 1e3, verts / t / 1e6,
+                  withCurvature * 1e3, floor * 1e3, t / floor);
+    }
   }
+  useBaselineVectors(false);
 
   // What analysis adds to a page re-solve at 256² (every patch solved with warm caches and
   // tessellated into reused meshes): curvature per vertex, the join report (256 points per

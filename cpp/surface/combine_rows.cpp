@@ -26,10 +26,7 @@ PDESURF_INLINE void addTerm(const std::array<double*, 6>& outRows, const double*
     }
 }
 
-}  // namespace
-
-PDESURF_VECTOR_CLONES
-void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
+PDESURF_INLINE void combinePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
   const int D = t.depth, Q = row.quantities;
   const size_t m = static_cast<size_t>(t.nu) + 1;
   for (int c = 0; c < 3; ++c) {
@@ -47,6 +44,19 @@ void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, Gr
         k == 0 ? addTerm<3, true>(out, G, m, gv + D * k, len) : addTerm<3, false>(out, G, m, gv + D * k, len);
     }
   }
+}
+
+#ifdef PDESURF_AVX2_COPY
+PDESURF_AVX2 void combinePieceAvx2(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) { combinePiece(t, j, i0, len, row); }
+#endif
+
+}  // namespace
+
+void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
+#ifdef PDESURF_AVX2_COPY
+  if (wideVectors()) return combinePieceAvx2(t, j, i0, len, row);
+#endif
+  combinePiece(t, j, i0, len, row);
 }
 
 }  // namespace pdesurf

@@ -46,6 +46,14 @@ unsigned pointFlags(const RowSlice& s, size_t k, bool curvature) {
   return flags;
 }
 
+// A near-cusp's curvature, clamped to what a float holds instead of ±inf (NaN kept). Done in
+// the rare pass over a flagged chunk: in the vector pass std::min/max would become wasm's
+// NaN-propagating f64x2.min/max, which V8 expands to about eight instructions each.
+float clampToFloat(float x) {
+  const float low = x < -3e38f ? -3e38f : x;
+  return low > 3e38f ? 3e38f : low;
+}
+
 // out[3k..3k+2] = (a[k], b[k], c[k]): four points per step in three vector shuffles (neither
 // GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic vectors:
 // SSE natively, simd128 in wasm, scalar code without either.
@@ -70,7 +78,8 @@ PDESURF_INLINE void interleave3(const float* __restrict a, const float* __restri
 // core is compiled without errno and FP traps, and with OpenMP's simd pragmas): a degenerate
 // point computes with a harmless 1 in place of |X_u × X_v|² and is masked to 0, and the
 // chunk's flagged points are summed. Then floats, interleaved xyz.
-// Returns whether any point is flagged (a pole, out of range or, with curvature, degenerate).
+// Returns whether any point is flagged (a pole, out of range or, with curvature, degenerate
+// or with a curvature beyond ±3e38).
 template <bool Curvature>
 PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict P, float* __restrict Nf, float* __restrict H, float* __restrict K) {
   alignas(64) float fx[kChunk], fy[kChunk], fz[kChunk], fnx[kChunk], fny[kChunk], fnz[kChunk];
@@ -113,9 +122,10 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
       const double N = (xvv[k] * nx + yvv[k] * ny + zvv[k] * nz) * inv;
       const double gauss = (L * N - M * M) * invDet;
       const double mean = 0.5 * (E * N - 2 * F * M + G * L) * invDet;
-      // A near-cusp is clamped to what a float holds instead of written as ±inf.
-      H[k] = static_cast<float>(std::min(std::max(mean, -3e38), 3e38));
-      K[k] = static_cast<float>(std::min(std::max(gauss, -3e38), 3e38));
+      // Beyond ±3e38 (or NaN): the chunk is flagged and frameRow clamps it.
+      flagged += std::fabs(mean) <= 3e38 && std::fabs(gauss) <= 3e38 ? 0.0 : 1.0;
+      H[k] = static_cast<float>(mean);
+      K[k] = static_cast<float>(gauss);
     }
   }
   interleave3(fx, fy, fz, P, len);
@@ -123,10 +133,7 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
   return flagged != 0;
 }
 
-}  // namespace
-
-PDESURF_VECTOR_CLONES
-void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
+PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
   const size_t m = row.count;
   f.poles = f.degenerate = 0;
   f.outOfRange = -1;
@@ -142,8 +149,22 @@ void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, flo
       f.poles += (p & kPole) != 0;
       f.degenerate += (p & kDegenerate) != 0;
       if ((p & kOutOfRange) && f.outOfRange < 0) f.outOfRange = static_cast<long>(i0 + k);
+      if (curvature) H[i0 + k] = clampToFloat(H[i0 + k]), K[i0 + k] = clampToFloat(K[i0 + k]);
     }
   }
+}
+
+#ifdef PDESURF_AVX2_COPY
+PDESURF_AVX2 void frameRowAvx2(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy(row, P, N, f, H, K); }
+#endif
+
+}  // namespace
+
+void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
+#ifdef PDESURF_AVX2_COPY
+  if (wideVectors()) return frameRowAvx2(row, P, N, f, H, K);
+#endif
+  frameRowCopy(row, P, N, f, H, K);
 }
 
 }  // namespace pdesurf

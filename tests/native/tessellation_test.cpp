@@ -111,3 +111,30 @@ TEST_CASE("tessellation: the first point beyond a float is named, also in a late
   tessellateInto(surfaceUpTo("0.887"), 1000, 4, m);  // every point fits, the last barely
   CHECK(m.positions[3 * 1000] > 3e38f);
 }
+
+TEST_CASE("tessellation: a curvature beyond a float is clamped to ±3e38, in every piece; one that fits is kept") {
+  // A sphere of radius r: |H| = 1/r, K = 1/r². r = 1e-40 puts both beyond 3.4e38.
+  auto sphereOfRadius = [](const char* r) {
+    const std::string R = r;
+    const json scene = {{"format", "pdesurf-scene"},
+                        {"version", 3},
+                        {"patches",
+                         {{{"name", "s"}, {"kind", "surface"}, {"x", R + "*sin(t)*cos(v)"}, {"y", R + "*sin(t)*sin(v)"},
+                           {"z", R + "*cos(t)"}, {"t_range", json::array({"0.3", "2.8"})}, {"v_range", json::array({0, "2*pi"})}}}}};
+    return solveScene(parseScene(scene.dump())).at(0).surface;
+  };
+  Mesh m;
+  tessellateInto(sphereOfRadius("1e-40"), 600, 3, m, true);
+  size_t clampedH = 0, clampedK = 0;
+  for (size_t k = 0; k < m.meanCurvature.size(); ++k) {
+    clampedH += std::abs(m.meanCurvature[k]) == 3e38f;
+    clampedK += m.gaussCurvature[k] == 3e38f;
+  }
+  CHECK(clampedH == m.meanCurvature.size());
+  CHECK(clampedK == m.gaussCurvature.size());
+  tessellateInto(sphereOfRadius("1e-15"), 600, 3, m, true);
+  for (size_t k = 0; k < m.meanCurvature.size(); k += 97) {
+    CHECK(std::abs(std::abs(m.meanCurvature[k]) - 1e15f) < 1e-4f * 1e15f);
+    CHECK(std::abs(m.gaussCurvature[k] - 1e30f) < 1e-4f * 1e30f);
+  }
+}
