@@ -6,7 +6,11 @@
 (() => {
   const script = document.currentScript;
   try {
-    const worker = new Worker(new URL(script.dataset.worker, location.href), { type: 'module' });
+    // The page's hash goes along: the worker solves the example it names ahead
+    // (solver/ahead-solve.js).
+    const url = new URL(script.dataset.worker, location.href);
+    url.hash = new URLSearchParams({ first: location.hash }).toString();
+    const worker = new Worker(url, { type: 'module' });
     worker.onerror = (e) => {
       e.preventDefault();
       worker.failed = true; // the client starts a fresh one

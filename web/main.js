@@ -41,8 +41,6 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
   controlPointScreen: (patch, i, j) => viewer.screenOf(bezier.pointOf(patch, i, j)),
   analysis: () => analysis?.state() ?? null,
   cameraState: () => viewer?.cameraState() ?? null,
-  // Draw calls of the last frame and shader programs built so far (a cold start's cost).
-  renderInfo: () => viewer && { calls: viewer.renderer.info.render.calls, programs: viewer.renderer.info.programs.length },
   patchCurvature: (name) => analysis?.patchCurvature(name) ?? null,
   vertexScreen: (patch, k) => viewer.vertexScreen(patch, k),
   vertexWorld: (patch, k) => viewer.vertexWorld(patch, k),
@@ -67,24 +65,28 @@ async function start() {
     onError: (...args) => relay.error(...args),
     onBusy: (ms) => status.busy(ms),
   });
-  // Fetched while the view starts: the first solve then leaves as soon as the page can send it.
-  const loading = loadExamplesAhead(readHash());
-  try {
-    viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
-      onFirstSurfaceFrame: (at) => { hooks.firstFrameAt = at; },
-    });
-  } catch (err) {
-    fail(new Error(`cannot start WebGL: ${err.message}`));
-    return;
-  }
+  // The catalogue and the scene are preloaded by the page (and solved ahead by the worker):
+  // read first, while the main thread is idle, so that creating the view is the last step
+  // before the first request.
   let examples;
   try {
+    const loading = loadExamplesAhead(readHash());
     examples = await loading.index;
-    // Waited for here, while the page is still light: the wiring below, the opening and the
-    // first solve's request then run in one task, before the first layout of the panel.
     await loading.scene;
   } catch (err) {
     fail(err);
+    return;
+  }
+  try {
+    viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
+      onFirstSurfaceFrame: (at) => {
+        hooks.firstFrameAt = at;
+        // That frame's draw calls and the shader programs built for it (a cold start's cost).
+        hooks.firstFrameInfo = { calls: viewer.renderer.info.render.calls, programs: viewer.renderer.info.programs.length };
+      },
+    });
+  } catch (err) {
+    fail(new Error(`cannot start WebGL: ${err.message}`));
     return;
   }
   const state = createSceneState();

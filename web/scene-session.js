@@ -14,6 +14,10 @@ import { decodeFragment } from './link/link-codec.js';
 import { createSolveScheduler } from './state/solve-scheduler.js';
 import { messageOf } from './state/document.js';
 
+// How long a cold start's first solve may keep the panel unbuilt (a solve ahead is drawn
+// well within it; a slow one shows the panel meanwhile).
+const FIRST_PANEL_WAIT_MS = 150;
+
 /**
  * doc, solver (solver/solver-client.js) and relay ({ result, error }: where its answers go),
  * viewer, panel, gallery, status, hooks, titleEl, examples (the index), fail(err);
@@ -30,6 +34,12 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   let opening = false; // the next solve opens a scene (not a user's change)
   let quiet = false; // the next solve only adds analysis data: not a user's edit
   let notice = null; // shown instead of the solve summary once (e.g. a bad link)
+  // The page's first scene: its surface is drawn before its panel and gallery entry are built
+  // and the page's chrome is laid out (about 80 ms of DOM work and text layout, which would
+  // hold the first frame back), then they follow.
+  let presentLater = null;
+  let presentTimer = 0;
+  let presentedOnce = false;
 
   // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
   relay.result = applyResult;
@@ -37,15 +47,36 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   hooks.solverRestarts = () => solver.restarts;
   const scheduler = createSolveScheduler(solveNow);
 
-  // Another scene on screen: its panel, gallery entry and title, and the camera it comes
+  // Another scene on screen: its title, panel and gallery entry, and the camera it comes
   // with (else framed on its first solve); features reset on 'opened'.
   function present(scene, exampleId, title, camera) {
-    panel.showScene(scene);
-    gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
     titleEl.textContent = title;
     cameraPending = camera;
     fitPending = !camera;
-    doc.emit('opened', scene, { exampleId, title });
+    flushPresent();
+    const show = () => {
+      document.body.classList.remove('starting');
+      panel.showScene(scene);
+      gallery.setActive(exampleId, typeof scene.description === 'string' ? scene.description : '');
+      doc.emit('opened', scene, { exampleId, title });
+    };
+    if (presentedOnce) show();
+    else {
+      // The page's first scene: shown by applyResult after its first frame, by any other
+      // change, or after FIRST_PANEL_WAIT_MS if its solve takes longer (the panel is then
+      // there to edit while it runs).
+      presentLater = show;
+      presentTimer = setTimeout(flushPresent, FIRST_PANEL_WAIT_MS);
+    }
+    presentedOnce = true;
+  }
+
+  // Anything but the first result's drawing needs the scene presented first.
+  function flushPresent() {
+    clearTimeout(presentTimer);
+    const show = presentLater;
+    presentLater = null;
+    show?.();
   }
 
   // Shared by examples, links, files and built scenes: the scene becomes the page state.
@@ -53,6 +84,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   // next frame (an example or a link: nothing follows that could change it; on a cold
   // start the worker waits idle and that frame is the page's first layout).
   function showScene(scene, { exampleId = null, title, camera = null, solveAtOnce = false }) {
+    flushPresent();
     sceneToken++;
     parts.share.opening();
     opening = true;
@@ -70,6 +102,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   // (the hash follows). The camera stays within a scene; another scene comes back with the
   // view it was left with (`camera`), or framed.
   function restoreScene({ sceneText, grid, exampleId, title }, camera) {
+    flushPresent();
     const scene = JSON.parse(sceneText);
     const sameScene = exampleId === state.exampleId && title === titleEl.textContent;
     sceneToken++;
@@ -164,6 +197,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   }
 
   function applyFailure(err, job) {
+    flushPresent();
     hooks.solveCount++;
     if (doc.solved(false, err)) return; // a checked edit (a picked blend) is undone and says why
     if (parts.files.failed(err, job)) return; // an opened file's scene: the previous one comes back
@@ -179,13 +213,28 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   }
 
   function applyResult(result, job, ms) {
-    hooks.solveCount++;
     // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
     const topology = gridTopology(job.grid.nu, job.grid.nv);
     for (const p of result.patches) {
       p.uvs = topology.uvs;
       p.indices = topology.indices;
     }
+    if (presentLater) {
+      // The first surface on screen now; its panel, and the result's handling, after.
+      viewer.setPatches(result.patches);
+      if (cameraPending) viewer.setCamera(cameraPending);
+      else if (fitPending) viewer.fit();
+      cameraPending = null;
+      fitPending = false;
+      const token = sceneToken;
+      viewer.afterNextFrame(() => {
+        if (token !== sceneToken) return; // another scene was opened meanwhile
+        flushPresent();
+        applyResult(result, job, ms);
+      });
+      return;
+    }
+    hooks.solveCount++;
     linkPending = false;
     doc.solved(true);
     parts.history.solved();
@@ -201,7 +250,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     hooks.lastError = null;
     if (!hooks.ready) hooks.readyAt = performance.now(); // first surface, from navigation start
     // The page path of this solve (request to drawn) against the worker's own time.
-    hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid,
+    hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid, solvedAhead: Boolean(result.solvedAhead),
       // Which pde patches the module solved again (the others' problems did not change).
       resolved: result.patches.filter((p) => p.reused === false && (p.kind === 'pde' || p.kind === 'fill')).map((p) => p.name) };
     hooks.ready = true;

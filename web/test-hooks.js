@@ -18,10 +18,11 @@ export function checksumOf(arrays) {
 /** extras: further read-only functions (the bezier overlays and editor, from main.js). */
 export function installTestHooks(getPositionArrays, getCamera = () => null, extras = {}) {
   const hooks = {
-    ready: false, // true once the first mesh is drawn
+    ready: false, // true once the first result is handled (after its frame: the panel built)
     readyAt: null, // performance.now() then, from navigation start
     firstFrameAt: null, // performance.now() once the first frame showing a surface is presented
-    lastSolve: null, // { pageMs, workerMs, nu, nv } of the latest drawn solve
+    firstFrameInfo: null, // { calls, programs } of that frame
+    lastSolve: null, // { pageMs, workerMs, nu, nv, solvedAhead, resolved } of the latest drawn solve
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve
     exampleId: null, // null while a scene from a shared link is open

@@ -6,9 +6,11 @@ import { launchChromium } from './harness.mjs';
 
 /**
  * Loads `url` in a browser of its own and waits until `frameMark()` (run in the page, e.g.
- * () => window.__pdesurf?.firstFrameAt) is a number: { frameMs, readyMs (the page's
- * window.__pdesurf.readyAt, if any), resources: { path: responseEnd ms }, info (the page's
- * window.__pdesurf.renderInfo(), if any), problems: [console errors, page errors] }.
+ * () => window.__pdesurf?.firstFrameAt) is a number, then, on pdesurf's page, until it is
+ * ready (its first result handled and its panel built, after that frame): { frameMs,
+ * readyMs (window.__pdesurf.readyAt), resources: { path: responseEnd ms }, info (the first
+ * frame's { calls, programs }), solvedAhead (the first solve came from the worker's solve
+ * ahead), problems: [console errors, page errors] }; the last four null on another page.
  */
 export async function firstVisit(url, frameMark, { viewport = { width: 1280, height: 800 } } = {}) {
   const browser = await launchChromium({ viewport });
@@ -21,11 +23,13 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
     await page.goto(url);
     await page.waitForFunction(frameMark, null, { timeout: 60_000 });
     const frameMs = await page.evaluate(frameMark);
+    await page.waitForFunction(() => !window.__pdesurf || window.__pdesurf.ready, null, { timeout: 60_000 });
     const seen = await page.evaluate((ms) => ({
       frameMs: ms,
       readyMs: window.__pdesurf?.readyAt ?? null,
       resources: Object.fromEntries(performance.getEntriesByType('resource').map((r) => [new URL(r.name).pathname, r.responseEnd])),
-      info: window.__pdesurf?.renderInfo?.() ?? null,
+      info: window.__pdesurf?.firstFrameInfo ?? null,
+      solvedAhead: window.__pdesurf?.lastSolve?.solvedAhead ?? null,
     }), frameMs);
     return { ...seen, problems };
   } finally {

@@ -5,8 +5,11 @@
 // benchmark's business, not asserted here.
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { skip, startHarness } from './harness.mjs';
+import fs from 'node:fs';
+import path from 'node:path';
+import { skip, startHarness, ROOT } from './harness.mjs';
 import { firstVisit } from './first-visit.mjs';
+import { encodeState } from '../../web/link/link-codec.js';
 
 describe('first visit', { skip }, () => {
   let h;
@@ -23,8 +26,22 @@ describe('first visit', { skip }, () => {
   it('the production page marks the first frame showing its first solve, built with one shader program', async () => {
     const r = await firstVisit(`${h.base}/app/#example=you2004-fig2a`, () => window.__pdesurf?.firstFrameAt);
     assert.deepEqual(r.problems, []);
-    assert.ok(r.readyMs > 0 && r.frameMs > r.readyMs, `ready ${r.readyMs} ms, frame ${r.frameMs} ms`);
+    // The surface first; the panel and the rest of the result's handling after that frame.
+    assert.ok(r.frameMs > 0 && r.readyMs > r.frameMs, `frame ${r.frameMs} ms, ready ${r.readyMs} ms`);
+    assert.equal(r.solvedAhead, true, 'the worker solved the example ahead and the page took that result');
     // Three patches (two primaries, one blend) with the patch material: one program.
     assert.deepEqual(r.info, { calls: 3, programs: 1 });
+  });
+
+  it('another example is solved ahead too; a state link is not, and both open as they say', async () => {
+    const other = await firstVisit(`${h.base}/app/#example=you2004-fig4a`, () => window.__pdesurf?.firstFrameAt);
+    assert.deepEqual(other.problems, []);
+    assert.equal(other.solvedAhead, true);
+    const scene = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'you2004-fig4a.json'), 'utf8'));
+    scene.title = 'edited';
+    const link = await encodeState({ scene, grid: { nu: 40, nv: 24 } });
+    const linked = await firstVisit(`${h.base}/app/#${link}`, () => window.__pdesurf?.firstFrameAt);
+    assert.deepEqual(linked.problems, []);
+    assert.equal(linked.solvedAhead, false, 'a state link is decoded by the page, not solved ahead');
   });
 });

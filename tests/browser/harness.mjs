@@ -20,6 +20,10 @@ const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync',
   '--use-gl=angle', '--use-angle=swiftshader',
+  // Headless Chromium 156 sometimes (about one launch in three) preloads its omnibox popup's
+  // WebUI in a renderer of its own, about a second of CPU while the page under test loads:
+  // on two cores that was most of the first-visit benchmark's spread (pairs 1.0-2.7x).
+  '--disable-features=PreloadTopChromeWebUI,WebUIOmniboxPopup,WebUIOmniboxFullPopup,WebUIOmniboxAimPopup',
 ];
 
 export const skip = fs.existsSync(CHROMIUM) ? false : `${CHROMIUM} is missing (apt-get install chromium); browser tests skipped`;

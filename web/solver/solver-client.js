@@ -6,6 +6,8 @@
 //   .request(job)  job: { scene (text), options, token }; a result whose token differs from
 //                  the newest request's is stale and dropped (another scene was opened).
 //   .busy()        true while a solve runs
+// A cold start's first scene may come solved unasked (solver/ahead-solve.js): the first
+// request for exactly that scene and those options takes it without a round trip.
 //   .restarts      how many solves were cancelled (for tests)
 //   .exportCad(scene (text), { format, tolerance }) -> promise of the module's exportCad
 //                  result ({ title, tolerance, faces, text? }, plus ms: the worker's time), or
@@ -17,6 +19,8 @@
 // solve's time if that is longer: a scene that always takes a second still shows a result
 // per second during a drag, while a solve far slower than the last (a pathological edit)
 // gives way to the next edit.
+import { sameSolve } from './same-solve.js';
+
 const CANCEL_AFTER_MS = 300;
 const BUSY_AFTER_MS = 100; // "solving…" only for solves one can notice
 
@@ -31,6 +35,8 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let latestToken = null;
   let busyTimer = 0;
   let cancelTimer = 0;
+  let ahead = null; // { scene, options, result, ms }: solved before any request (one use)
+  let requested = false; // a solve was asked for: a result arriving unasked after is no use
   const client = { restarts: 0 };
   spawn(); // now: the module loads while the page sets up
 
@@ -109,6 +115,10 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
       exported(msg);
       return;
     }
+    if (msg.kind === 'ahead') {
+      arrivedAhead(msg);
+      return;
+    }
     if (!running || msg.id !== running.id) return;
     const { job } = running;
     lastMs = msg.ms;
@@ -118,6 +128,17 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
       else onError(msg.error, job);
     }
     next();
+  }
+
+  // A cold start's first scene, solved unasked. Kept for the first request; or the answer to
+  // the running one, asked for meanwhile (the worker then solves it again: that reply is dropped).
+  function arrivedAhead(msg) {
+    if (running && sameSolve(msg, running.job)) {
+      const { job } = running;
+      stopRunning();
+      if (job.token === latestToken) onResult(msg.result, job, msg.ms);
+      next();
+    } else if (!requested) ahead = msg;
   }
 
   // The running solve has kept a newer request waiting past the limit: drop the worker (and
@@ -134,6 +155,16 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
 
   client.request = (job) => {
     latestToken = job.token;
+    requested = true;
+    const early = ahead;
+    ahead = null;
+    if (early && !running && !exporting && sameSolve(early, job)) {
+      // After the caller's task, as a worker's reply would be (the caller may not be ready).
+      queueMicrotask(() => {
+        if (job.token === latestToken) onResult(early.result, job, early.ms);
+      });
+      return;
+    }
     if (!running && !exporting) {
       dispatch(job);
       return;

@@ -3,6 +3,8 @@
 //   in:  { id, scene (JSON text), options: { nu, nv, curvature, joins, crossings } }
 //   out: { id, ok: true, result, ms } with every typed array transferred (moved, not copied),
 //        or { id, ok: false, error: { code, message }, ms }
+// Unasked, once, on a cold start: { kind: 'ahead', scene, options, result, ms }, the example
+// the page's hash names, solved ahead (ahead-solve.js).
 // A CAD export (the File folder's STEP, IGES, 3dm; docs/wasm-api.md, exportCad):
 //   in:  { id, kind: 'exportCad', scene, options: { format, tolerance } }
 //   out: { id, kind: 'exportCad', ok: true, result: { title, tolerance, faces, text? }, ms }
@@ -10,6 +12,7 @@
 // uvs and indices are never sent: they depend on the grid alone and the page builds them
 // (viewer/grid-topology.js).
 import { loadSolver } from './pdesurf-solver.js';
+import { createAheadSolve } from './ahead-solve.js';
 
 // The .wasm is fetched at once, in parallel with the glue code's import.
 const wasmBinary = fetch('/wasm/pdesurf.wasm').then((r) => {
@@ -64,11 +67,26 @@ const run = {
   },
 };
 
+// The scene a cold start will ask for first, solved as soon as the module is ready, while
+// the page is still loading: web/boot.js starts this worker with the page's hash in its URL
+// (#first=…; a message would wait behind the module's loading).
+const ahead = createAheadSolve(ready, run.solve, (message, transfer) => self.postMessage({ kind: 'ahead', ...message }, transfer));
+const first = new URLSearchParams(self.location.hash.slice(1)).get('first');
+if (first !== null) {
+  asked = true; // the solve ahead warms the module up instead
+  ahead.start(first);
+}
+
 self.onmessage = async (event) => {
   asked = true;
   const { id, kind = 'solve', scene, options } = event.data;
   const t0 = performance.now();
   try {
+    const early = kind === 'solve' ? await ahead.take(scene, options) : null;
+    if (early) {
+      self.postMessage({ id, kind, ok: true, result: early.result, ms: early.ms }, early.transfer);
+      return;
+    }
     const solver = await ready;
     if (!Object.hasOwn(run, kind)) throw new Error(`unknown request ${JSON.stringify(kind)}`);
     const [result, transfer] = run[kind](solver, scene, options);

@@ -74,14 +74,20 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
   // 0.5-2 s of main thread in headless Chromium before.
   let frame = 0;
   let surfaceDrawn = false;
+  let afterShown = []; // callbacks for once the next frame drawn is on screen
   function draw() {
     frame = 0;
     renderer.render(scene, camera);
+    // The next frame's callback runs once this frame has gone to the compositor.
     if (!surfaceDrawn && surfaces.children.length > 0) {
       surfaceDrawn = true;
-      // The next frame's callback runs once this frame has gone to the compositor: what a
-      // visitor sees first (scripts/bench-page.mjs, the cold start).
+      // What a visitor sees first (scripts/bench-page.mjs, the cold start).
       requestAnimationFrame(() => onFirstSurfaceFrame?.(performance.now()));
+    }
+    if (afterShown.length > 0) {
+      const callbacks = afterShown;
+      afterShown = [];
+      requestAnimationFrame(() => callbacks.forEach((f) => f()));
     }
   }
   function render() {
@@ -242,6 +248,11 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
       return xyz && this.screenOf(xyz);
     },
 
+    /** Calls f once the next frame drawn is on screen (after the patches set now are shown). */
+    afterNextFrame(f) {
+      afterShown.push(f);
+      render();
+    },
     /** Frame every patch: a new example, or byUser (the fit button, F); slider moves keep the view. */
     fit(byUser = false) {
       rig.fit(byUser);
