@@ -50,8 +50,10 @@ const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), ()
     select: viewer.select, setPatchVisible: viewer.setPatchVisible, marks: viewer.marks },
 });
 
-// Shown in the status line; the surfaces already drawn stay as they are.
+// Shown in the status line; the surfaces already drawn stay as they are. The page's chrome,
+// hidden until the first scene is presented (scene-session.js), shows what there is of it.
 function fail(err) {
+  document.body.classList.remove('starting');
   const msg = messageOf(err);
   hooks.lastError = msg;
   status.error(msg);

@@ -248,7 +248,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     doc.emit('drawn', result, job);
     panel.showSolved(result.patches);
     hooks.lastError = null;
-    if (!hooks.ready) hooks.readyAt = performance.now(); // first surface, from navigation start
+    if (!hooks.ready) hooks.readyAt = performance.now(); // first result handled (its frame already shown)
     // The page path of this solve (request to drawn) against the worker's own time.
     hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid, solvedAhead: Boolean(result.solvedAhead),
       // Which pde patches the module solved again (the others' problems did not change).
