@@ -53,7 +53,6 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     titleEl.textContent = title;
     cameraPending = camera;
     fitPending = !camera;
-    flushPresent();
     const show = () => {
       document.body.classList.remove('starting');
       panel.showScene(scene);
@@ -212,25 +211,31 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     panel.showSolveError(err && err.message ? err.message : String(err));
   }
 
-  function applyResult(result, job, ms) {
+  // The patches on screen, and the camera a new scene comes with (or framed on them).
+  function draw(result, job) {
     // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
     const topology = gridTopology(job.grid.nu, job.grid.nv);
     for (const p of result.patches) {
       p.uvs = topology.uvs;
       p.indices = topology.indices;
     }
+    viewer.setPatches(result.patches);
+    if (cameraPending) viewer.setCamera(cameraPending);
+    else if (fitPending) viewer.fit();
+    cameraPending = null;
+    fitPending = false;
+  }
+
+  // drawn: the first scene's surface, already drawn before its panel was built.
+  function applyResult(result, job, ms, drawn = false) {
     if (presentLater) {
-      // The first surface on screen now; its panel, and the result's handling, after.
-      viewer.setPatches(result.patches);
-      if (cameraPending) viewer.setCamera(cameraPending);
-      else if (fitPending) viewer.fit();
-      cameraPending = null;
-      fitPending = false;
+      draw(result, job);
+      hooks.surfaceBeforePanel = true;
       const token = sceneToken;
       viewer.afterNextFrame(() => {
         if (token !== sceneToken) return; // another scene was opened meanwhile
         flushPresent();
-        applyResult(result, job, ms);
+        applyResult(result, job, ms, true);
       });
       return;
     }
@@ -240,11 +245,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     parts.history.solved();
     state.noteSolved(result.patches);
     doc.emit('solved', result, job);
-    viewer.setPatches(result.patches);
-    if (cameraPending) viewer.setCamera(cameraPending);
-    else if (fitPending) viewer.fit();
-    cameraPending = null;
-    fitPending = false;
+    if (!drawn) draw(result, job);
     doc.emit('drawn', result, job);
     panel.showSolved(result.patches);
     hooks.lastError = null;

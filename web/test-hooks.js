@@ -22,6 +22,7 @@ export function installTestHooks(getPositionArrays, getCamera = () => null, extr
     readyAt: null, // performance.now() then, from navigation start
     firstFrameAt: null, // performance.now() once the first frame showing a surface is presented
     firstFrameInfo: null, // { calls, programs } of that frame
+    surfaceBeforePanel: false, // the first result came within FIRST_PANEL_WAIT_MS: drawn before the panel was built
     lastSolve: null, // { pageMs, workerMs, nu, nv, solvedAhead, resolved } of the latest drawn solve
     solveCount: 0, // solve attempts, failed ones included
     lastError: null, // message of the latest failure; null after a good solve

@@ -10,7 +10,8 @@ import { launchChromium } from './harness.mjs';
  * ready (its first result handled and its panel built, after that frame): { frameMs,
  * readyMs (window.__pdesurf.readyAt), resources: { path: responseEnd ms }, info (the first
  * frame's { calls, programs }), solvedAhead (the first solve came from the worker's solve
- * ahead), problems: [console errors, page errors] }; the last four null on another page.
+ * ahead), surfaceBeforePanel (that solve came in time to be drawn before the panel was
+ * built), problems: [console errors, page errors] }; those five null on another page.
  */
 export async function firstVisit(url, frameMark, { viewport = { width: 1280, height: 800 } } = {}) {
   const browser = await launchChromium({ viewport });
@@ -30,6 +31,7 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
       resources: Object.fromEntries(performance.getEntriesByType('resource').map((r) => [new URL(r.name).pathname, r.responseEnd])),
       info: window.__pdesurf?.firstFrameInfo ?? null,
       solvedAhead: window.__pdesurf?.lastSolve?.solvedAhead ?? null,
+      surfaceBeforePanel: window.__pdesurf?.surfaceBeforePanel ?? null,
     }), frameMs);
     return { ...seen, problems };
   } finally {

@@ -6,14 +6,14 @@
 //   .request(job)  job: { scene (text), options, token }; a result whose token differs from
 //                  the newest request's is stale and dropped (another scene was opened).
 //   .busy()        true while a solve runs
-// A cold start's first scene may come solved unasked (solver/ahead-solve.js): the first
-// request for exactly that scene and those options takes it without a round trip.
 //   .restarts      how many solves were cancelled (for tests)
 //   .exportCad(scene (text), { format, tolerance }) -> promise of the module's exportCad
 //                  result ({ title, tolerance, faces, text? }, plus ms: the worker's time), or
 //                  an Error with the core's code. One at a time; it runs between solves, never
 //                  beside one (the worker is one thread): a solve asked for meanwhile waits
 //                  for it, and no waiting edit cancels it.
+// A cold start's first scene may come solved unasked (solver/ahead-solve.js): the first
+// request for exactly that scene and those options takes it without a round trip.
 
 // A waiting edit cancels the running solve after this long, or after 1.5 times the last
 // solve's time if that is longer: a scene that always takes a second still shows a result
