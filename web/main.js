@@ -26,6 +26,11 @@ import { createFileWiring } from './file-wiring.js';
 import { createHistoryWiring } from './history-wiring.js';
 import { createBuildWiring } from './build-wiring.js';
 import { createSceneSession } from './scene-session.js';
+import { showSolvedAhead } from './first-surface.js';
+
+// How long the page waits, once its view exists, for the first surface the worker solves
+// ahead before it wires its features anyway (the worker may be slow to load).
+const FIRST_SURFACE_WAIT_MS = 150;
 
 const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
@@ -67,18 +72,10 @@ async function start() {
     onError: (...args) => relay.error(...args),
     onBusy: (ms) => status.busy(ms),
   });
-  // The catalogue and the scene are preloaded by the page (and solved ahead by the worker):
-  // read first, while the main thread is idle, so that creating the view is the last step
-  // before the first request.
-  let examples;
-  try {
-    const loading = loadExamplesAhead(readHash());
-    examples = await loading.index;
-    await loading.scene;
-  } catch (err) {
-    fail(err);
-    return;
-  }
+  // The catalogue and the scene are preloaded by the page (and solved ahead by the worker);
+  // they are read once the first surface is drawn.
+  const loading = loadExamplesAhead(readHash());
+  loading.index.catch(() => {}); // reported below
   try {
     viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
       onFirstSurfaceFrame: (at) => {
@@ -89,6 +86,16 @@ async function start() {
     });
   } catch (err) {
     fail(new Error(`cannot start WebGL: ${err.message}`));
+    return;
+  }
+  // The example the worker solved ahead is drawn before the page is wired.
+  await showSolvedAhead({ solver, viewer, waitMs: FIRST_SURFACE_WAIT_MS });
+  let examples;
+  try {
+    examples = await loading.index;
+    await loading.scene;
+  } catch (err) {
+    fail(err);
     return;
   }
   const state = createSceneState();

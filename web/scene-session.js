@@ -6,7 +6,7 @@
 //   'solved'  (result, job)                  a good solve, before it is drawn
 //   'drawn'   (result, job)                  after it is drawn
 // Opening and links stay explicit (share, files, history): they decide what a solve means.
-import { gridTopology } from './viewer/grid-topology.js';
+import { withGridTopology } from './viewer/grid-topology.js';
 import { DEFAULT_GRID } from './state/scene-state.js';
 import { loadExampleScene } from './state/examples.js';
 import { readHash, writeExampleIdToHash, markHashShown, hashIsShown } from './state/hash.js';
@@ -213,13 +213,8 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
 
   // The patches on screen, and the camera a new scene comes with (or framed on them).
   function draw(result, job) {
-    // uvs and indices depend on the grid alone: built here once per grid, shared by the patches.
-    const topology = gridTopology(job.grid.nu, job.grid.nv);
-    for (const p of result.patches) {
-      p.uvs = topology.uvs;
-      p.indices = topology.indices;
-    }
-    viewer.setPatches(result.patches);
+    // uvs and indices depend on the grid alone: built once per grid, shared by the patches.
+    viewer.setPatches(withGridTopology(result.patches, job.grid));
     if (cameraPending) viewer.setCamera(cameraPending);
     else if (fitPending) viewer.fit();
     cameraPending = null;
@@ -228,6 +223,15 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
 
   // drawn: the first scene's surface, already drawn before its panel was built.
   function applyResult(result, job, ms, drawn = false) {
+    if (presentLater && viewer.shows(result.patches)) {
+      // Drawn, and its frame shown, before the page was wired (first-surface.js).
+      cameraPending = null;
+      fitPending = false;
+      hooks.surfaceBeforePanel = true;
+      flushPresent();
+      applyResult(result, job, ms, true);
+      return;
+    }
     if (presentLater) {
       draw(result, job);
       hooks.surfaceBeforePanel = true;

@@ -72,7 +72,7 @@ describe('the worker side: createAheadSolve', () => {
     assert.equal(await ahead.take(text, OPENING_OPTIONS), null, 'posted: no second use');
   });
 
-  it('no hash or an unknown example: the first of the catalogue; a state link: nothing', async () => {
+  it('no hash or an unknown example: the first of the catalogue; a state link: nothing solved, and the page told so', async () => {
     for (const hash of ['', '#', '#example=nope']) {
       const { ahead, posted } = setUp();
       ahead.start(hash);
@@ -83,7 +83,7 @@ describe('the worker side: createAheadSolve', () => {
     const { ahead, posted, solved } = setUp();
     ahead.start('#s=abc');
     await tick(10);
-    assert.deepEqual([posted, solved, fetched], [[], [], []]);
+    assert.deepEqual([posted, solved, fetched], [[[{ result: null }, []]], [], []]);
     assert.equal(await ahead.take('x', {}), null);
   });
 
@@ -106,12 +106,21 @@ describe('the worker side: createAheadSolve', () => {
     }
   });
 
-  it('a catalogue or scene that cannot be fetched posts nothing (the page reports it)', async () => {
+  it('a catalogue or scene that cannot be fetched posts that none will come (the page\'s request reports why)', async () => {
     globalThis.fetch = async () => ({ ok: false, status: 500, text: async () => '' });
     const { ahead, posted, solved } = setUp();
     ahead.start('#example=first');
     await tick(10);
-    assert.deepEqual([posted, solved], [[], []]);
+    assert.deepEqual([posted, solved], [[[{ result: null }, []]], []]);
+    assert.equal(await ahead.take('x', OPENING_OPTIONS), null);
+  });
+
+  it('a solve that throws posts that none will come', async () => {
+    const posted = [];
+    const ahead = createAheadSolve(Promise.resolve('solver'), () => { throw new Error('no'); }, (msg, transfer) => posted.push([msg, transfer]));
+    ahead.start('#example=first');
+    await tick(10);
+    assert.deepEqual(posted, [[{ result: null }, []]]);
   });
 });
 
@@ -130,9 +139,11 @@ FakeWorker.all = [];
 describe('the page side: the solver client', () => {
   const scene = '{"title":"first"}';
   const aheadMsg = () => ({ kind: 'ahead', scene, options: OPENING_OPTIONS, result: { patches: ['solved ahead'] }, ms: 7 });
-  function client() {
+  function client({ earlyWorker = false } = {}) {
     globalThis.Worker = FakeWorker;
     FakeWorker.all.length = 0;
+    // web/boot.js's worker, started with the page's hash: the only one that solves ahead.
+    globalThis.__pdesurfEarlyWorker = earlyWorker ? new FakeWorker() : undefined;
     const results = [];
     const c = createSolverClient({ onResult: (r, job, ms) => results.push([r.patches[0], job.token, ms]), onError: () => {}, workerUrl: 'fake' });
     return { c, w: FakeWorker.all[0], results };
@@ -199,5 +210,67 @@ describe('the page side: the solver client', () => {
     assert.deepEqual(w.sent.map((m) => m.scene), ['another scene']);
     w.reply({ id: w.sent[0].id, ok: true, result: { patches: ['another'] }, ms: 2 });
     assert.deepEqual(results, [['another', 2, 2]]);
+  });
+
+  describe('onAhead: the surface solved ahead, for the page to draw before it is wired (web/first-surface.js)', () => {
+    const heard = (c) => {
+      const got = [];
+      const stop = c.onAhead((msg) => got.push(msg && msg.result.patches[0]));
+      return { got, stop };
+    };
+
+    it('tells its listeners when it comes, or at once if it is here; the first request still takes it', async () => {
+      const { c, w, results } = client({ earlyWorker: true });
+      const early = heard(c);
+      assert.deepEqual(early.got, []);
+      w.reply(aheadMsg());
+      assert.deepEqual(early.got, ['solved ahead']);
+      assert.deepEqual(heard(c).got, ['solved ahead'], 'here already');
+      c.request({ scene, options: OPENING_OPTIONS, token: 1 });
+      await tick();
+      assert.deepEqual(results, [['solved ahead', 1, 7]]);
+      assert.deepEqual(w.sent, []);
+      assert.deepEqual(early.got, ['solved ahead'], 'told once');
+    });
+
+    it('null when none will come: the worker says so, it fails, or it is not the worker that solves ahead', async () => {
+      {
+        const { c, w } = client({ earlyWorker: true });
+        const l = heard(c);
+        w.reply({ kind: 'ahead', result: null });
+        assert.deepEqual(l.got, [null]);
+        assert.deepEqual(heard(c).got, [null], 'and to later listeners at once');
+        c.request({ scene, options: OPENING_OPTIONS, token: 1 });
+        assert.equal(w.sent.length, 1, 'the request goes to the worker');
+        w.reply({ id: w.sent[0].id, ok: true, result: { patches: ['solved'] }, ms: 3 });
+      }
+      {
+        const { c, w } = client({ earlyWorker: true });
+        const l = heard(c);
+        w.onerror({ preventDefault() {}, message: 'boom' });
+        assert.deepEqual(l.got, [null]);
+      }
+      {
+        const { c } = client();
+        assert.deepEqual(heard(c).got, [null], 'a worker of its own');
+      }
+      {
+        const { c, w } = client({ earlyWorker: true });
+        c.request({ scene: 'edit', options: OPENING_OPTIONS, token: 1 });
+        assert.deepEqual(heard(c).got, [null], 'a request was made: no use waiting');
+        w.reply({ id: w.sent[0].id, ok: true, result: { patches: ['solved'] }, ms: 3 });
+      }
+    });
+
+    it('a listener that stopped is not told; the result is still kept for the request', async () => {
+      const { c, w, results } = client({ earlyWorker: true });
+      const l = heard(c);
+      l.stop();
+      w.reply(aheadMsg());
+      assert.deepEqual(l.got, []);
+      c.request({ scene, options: OPENING_OPTIONS, token: 1 });
+      await tick();
+      assert.deepEqual(results, [['solved ahead', 1, 7]]);
+    });
   });
 });

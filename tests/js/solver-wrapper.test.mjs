@@ -72,3 +72,36 @@ describe('solver wrapper', () => {
       (e) => e instanceof PdesurfError && e.code === 'Load');
   });
 });
+
+// The worker hands the wrapper a module compiled as it streamed in (solver-worker.js): the
+// real module, instantiated from it; and one that cannot be instantiated fails the load
+// rather than leaving it waiting forever (emscripten's instantiateWasm hook has no error path).
+describe('solver wrapper: a compiled module', () => {
+  const build = process.env.PDESURF_BUILD_DIR || path.join(path.dirname(new URL(import.meta.url).pathname), '..', '..', 'build');
+  const wasmDir = path.resolve(build, 'wasm');
+  const moduleUrl = pathToFileURL(path.join(wasmDir, 'pdesurf.js')).href;
+  const scene = fs.readFileSync(new URL('../../examples/you2004-fig2a.json', import.meta.url), 'utf8');
+
+  it('is instantiated and solves, given as a module or a promise of one', async () => {
+    const bytes = fs.readFileSync(path.join(wasmDir, 'pdesurf.wasm'));
+    for (const wasmModule of [await WebAssembly.compile(bytes), WebAssembly.compile(bytes)]) {
+      const solver = await loadSolver({ moduleUrl, wasmModule });
+      const { patches } = solver.solve(scene, { nu: 8, nv: 8 });
+      assert.equal(patches.length, 3);
+      assert.equal(patches[0].positions.length, 3 * 81);
+      assert.ok(patches.every((p) => p.positions.every(Number.isFinite)));
+    }
+  });
+
+  it('one that cannot be instantiated (an import the glue lacks) fails the load with Load', { timeout: 20_000 }, async () => {
+    // (import "x" "y" (func)): the glue offers no "x".
+    const bytes = Uint8Array.of(0, 0x61, 0x73, 0x6d, 1, 0, 0, 0, 1, 4, 1, 0x60, 0, 0, 2, 7, 1, 1, 0x78, 1, 0x79, 0, 0);
+    await assert.rejects(loadSolver({ moduleUrl, wasmModule: WebAssembly.compile(bytes) }),
+      (e) => e instanceof PdesurfError && e.code === 'Load' && /cannot start the solver module/.test(e.message));
+  });
+
+  it('a module that cannot be compiled fails the load with Load', async () => {
+    await assert.rejects(loadSolver({ moduleUrl, wasmModule: WebAssembly.compile(Uint8Array.of(0, 1, 2, 3)) }),
+      (e) => e instanceof PdesurfError && e.code === 'Load');
+  });
+});

@@ -16,7 +16,8 @@ export const OPENING_OPTIONS = Object.freeze({ ...DEFAULT_GRID, curvature: false
 
 /**
  * ready: promise of the solver; solve(solver, sceneText, options) -> [result, transfer];
- * post({ scene, options, result, ms }, transfer): sends the result to the page unasked.
+ * post({ scene, options, result, ms }, transfer): sends the result to the page unasked, or
+ * { result: null } when none will come (a state link, a failure: the page then stops waiting).
  * start(pageHash) begins once; take(sceneText, options) -> promise of { result, transfer, ms }
  * for a request that arrives before the result was posted and asks for that scene, else null.
  */
@@ -27,7 +28,10 @@ export function createAheadSolve(ready, solve, post) {
     start(pageHash) {
       if (pending) return;
       const h = readHash(pageHash);
-      if (h.kind === 'state') return;
+      if (h.kind === 'state') {
+        post({ result: null }, []); // nothing ahead: the page decodes its link
+        return;
+      }
       pending = (async () => {
         const list = await loadExampleIndex();
         const entry = list.find((e) => e.id === h.id) || list[0];
@@ -39,9 +43,10 @@ export function createAheadSolve(ready, solve, post) {
         return { scene, options: OPENING_OPTIONS, result, transfer, ms: performance.now() - t0 };
       })().catch(() => null); // the page's own request reports any failure
       pending.then((done) => {
-        if (!done || claimed) return;
+        if (claimed) return;
         claimed = true;
-        post({ scene: done.scene, options: done.options, result: done.result, ms: done.ms }, done.transfer);
+        if (!done) post({ result: null }, []); // the page need not wait for it
+        else post({ scene: done.scene, options: done.options, result: done.result, ms: done.ms }, done.transfer);
       });
     },
     async take(scene, options) {

@@ -19,15 +19,14 @@ const DEFAULT_MODULE_URL = '/wasm/pdesurf.js';
  * Browser: imports /wasm/pdesurf.js (the module finds pdesurf.wasm beside itself).
  * Node: pass { moduleUrl, wasmBinary } (node's fetch cannot load a file path).
  * wasmBinary may be a promise: the worker starts fetching the .wasm while this imports the
- * module's glue code.
+ * module's glue code. Or wasmModule, a WebAssembly.Module or a promise of one (the worker's
+ * WebAssembly.compileStreaming: compiled as it downloads).
  */
 export async function loadSolver(opts = {}) {
   const moduleUrl = opts.moduleUrl || DEFAULT_MODULE_URL;
-  let factory, wasmBinary;
+  let factory, wasmBinary, wasmModule;
   try {
-    const [mod, binary] = await Promise.all([import(/* @vite-ignore */ moduleUrl), opts.wasmBinary]);
-    factory = mod.default;
-    wasmBinary = binary;
+    [{ default: factory }, wasmBinary, wasmModule] = await Promise.all([import(/* @vite-ignore */ moduleUrl), opts.wasmBinary, opts.wasmModule]);
   } catch (err) {
     throw new PdesurfError('Load', `cannot load the solver module ${moduleUrl}: ${err.message}`);
   }
@@ -36,13 +35,24 @@ export async function loadSolver(opts = {}) {
   }
   const moduleArgs = {};
   if (wasmBinary) moduleArgs.wasmBinary = wasmBinary;
+  // A module compiled already (the worker compiles it as it streams in): instantiated here,
+  // and a failure to instantiate rejects the load (emscripten's hook has no error path).
+  let instantiateFailed = null;
+  if (wasmModule) {
+    instantiateFailed = new Promise((_, reject) => {
+      moduleArgs.instantiateWasm = (imports, receive) => {
+        WebAssembly.instantiate(wasmModule, imports).then((instance) => receive(instance, wasmModule), reject);
+        return {};
+      };
+    });
+  }
   if (opts.locateFile) moduleArgs.locateFile = opts.locateFile;
   // Keep emscripten's stdout/stderr out of the console unless asked for.
   moduleArgs.print = opts.print || (() => {});
   moduleArgs.printErr = opts.printErr || ((s) => console.warn('[pdesurf wasm]', s));
   let Module;
   try {
-    Module = await factory(moduleArgs);
+    Module = await (instantiateFailed ? Promise.race([factory(moduleArgs), instantiateFailed]) : factory(moduleArgs));
   } catch (err) {
     throw new PdesurfError('Load', `cannot start the solver module: ${err && err.message ? err.message : err}`);
   }

@@ -14,6 +14,10 @@
 //                  for it, and no waiting edit cancels it.
 // A cold start's first scene may come solved unasked (solver/ahead-solve.js): the first
 // request for exactly that scene and those options takes it without a round trip.
+//   .onAhead(fn)   fn(message) once that result is here ({ scene, options, result, ms }: to
+//                  draw before the page is wired, web/first-surface.js; the request still
+//                  takes it), or fn(null) once none will come; returns a function that stops
+//                  listening.
 
 // A waiting edit cancels the running solve after this long, or after 1.5 times the last
 // solve's time if that is longer: a scene that always takes a second still shows a result
@@ -37,20 +41,25 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let cancelTimer = 0;
   let ahead = null; // { scene, options, result, ms }: solved before any request (one use)
   let requested = false; // a solve was asked for: a result arriving unasked after is no use
+  let aheadListeners = [];
   const client = { restarts: 0 };
   spawn(); // now: the module loads while the page sets up
+  // Only the worker web/boot.js started with the page's hash solves ahead.
+  let aheadExpected = Boolean(worker.solvesAhead);
 
   function spawn() {
     // The worker web/boot.js started while the page loaded, once, unless it failed.
     const early = globalThis.__pdesurfEarlyWorker;
     globalThis.__pdesurfEarlyWorker = undefined;
     worker = early && !early.failed ? early : new Worker(workerUrl, { type: 'module' });
+    worker.solvesAhead = worker === early;
     worker.onmessage = (e) => finished(e.data);
     // A worker that fails to load (or crashes) fails its request; the next one respawns it.
     worker.onerror = (e) => {
       e.preventDefault();
       const job = running?.job;
       const error = { code: 'Load', message: `the solver worker failed: ${e.message || 'unknown error'}` };
+      noneAhead();
       stopRunning();
       worker.terminate();
       worker = null;
@@ -133,12 +142,25 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   // A cold start's first scene, solved unasked. Kept for the first request; or the answer to
   // the running one, asked for meanwhile (the worker then solves it again: that reply is dropped).
   function arrivedAhead(msg) {
-    if (running && sameSolve(msg, running.job)) {
+    if (!msg.result) noneAhead(); // the worker could not solve it (the request will say why)
+    else if (running && sameSolve(msg, running.job)) {
       const { job } = running;
       stopRunning();
       if (job.token === latestToken) onResult(msg.result, job, msg.ms);
       next();
-    } else if (!requested) ahead = msg;
+    } else if (!requested) {
+      ahead = msg;
+      const listeners = aheadListeners;
+      aheadListeners = [];
+      for (const fn of listeners) fn(msg);
+    }
+  }
+
+  function noneAhead() {
+    aheadExpected = false;
+    const listeners = aheadListeners;
+    aheadListeners = [];
+    for (const fn of listeners) fn(null);
   }
 
   // The running solve has kept a newer request waiting past the limit: drop the worker (and
@@ -172,6 +194,17 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     if (!waiting) waiting = { job, since: performance.now() };
     else waiting.job = job; // coalesce: only the newest waiting request will run
     if (running && !cancelTimer) cancelTimer = setTimeout(cancelIfStuck, Math.max(CANCEL_AFTER_MS, 1.5 * lastMs));
+  };
+  client.onAhead = (fn) => {
+    if (ahead) fn(ahead);
+    else if (!aheadExpected || requested) fn(null);
+    else {
+      aheadListeners.push(fn);
+      return () => {
+        aheadListeners = aheadListeners.filter((f) => f !== fn);
+      };
+    }
+    return () => {};
   };
   client.busy = () => running !== null;
   client.exportCad = (scene, options) => new Promise((resolve, reject) => {

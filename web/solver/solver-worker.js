@@ -4,7 +4,8 @@
 //   out: { id, ok: true, result, ms } with every typed array transferred (moved, not copied),
 //        or { id, ok: false, error: { code, message }, ms }
 // Unasked, once, on a cold start: { kind: 'ahead', scene, options, result, ms }, the example
-// the page's hash names, solved ahead (ahead-solve.js).
+// the page's hash names, solved ahead (ahead-solve.js); { kind: 'ahead', result: null } if
+// there is none.
 // A CAD export (the File folder's STEP, IGES, 3dm; docs/wasm-api.md, exportCad):
 //   in:  { id, kind: 'exportCad', scene, options: { format, tolerance } }
 //   out: { id, kind: 'exportCad', ok: true, result: { title, tolerance, faces, text? }, ms }
@@ -14,12 +15,9 @@
 import { loadSolver } from './pdesurf-solver.js';
 import { createAheadSolve } from './ahead-solve.js';
 
-// The .wasm is fetched at once, in parallel with the glue code's import.
-const wasmBinary = fetch('/wasm/pdesurf.wasm').then((r) => {
-  if (!r.ok) throw new Error(`/wasm/pdesurf.wasm: HTTP ${r.status}`);
-  return r.arrayBuffer();
-});
-const ready = loadSolver({ wasmBinary });
+// The .wasm is compiled as it streams in (and a repeat visit gets the engine's code cache),
+// in parallel with the glue code's import.
+const ready = loadSolver({ wasmModule: compileWasm('/wasm/pdesurf.wasm') });
 ready.catch(() => {}); // reported with the first request
 
 // A small solve while the page still loads its example: the module's first calls run in
@@ -47,6 +45,18 @@ ready.then((solver) => setTimeout(() => {
     // only a warm-up
   }
 }), () => {});
+
+// A server that sends the .wasm with another content type than application/wasm fails
+// streaming compilation: then it is compiled from its bytes.
+async function compileWasm(url) {
+  try {
+    return await WebAssembly.compileStreaming(fetch(url));
+  } catch {
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+    return WebAssembly.compile(await response.arrayBuffer());
+  }
+}
 
 // patches of a solve, faces of a CAD export: their typed arrays' buffers.
 function transferablesOf(items) {

@@ -25,3 +25,13 @@ export function gridTopology(nu, nv) {
   last = { nu, nv, uvs, indices };
   return last;
 }
+
+/** Gives each solved patch of a grid { nu, nv } the grid's uvs and indices (shared). */
+export function withGridTopology(patches, { nu, nv }) {
+  const topology = gridTopology(nu, nv);
+  for (const p of patches) {
+    p.uvs = topology.uvs;
+    p.indices = topology.indices;
+  }
+  return patches;
+}

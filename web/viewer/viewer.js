@@ -112,7 +112,10 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
   // shows a surface; nothing else: the other materials (overlays, markers) wait for use.
   const warmUp = new THREE.Group();
   warmUp.add(...shaderWarmUpMeshes());
-  renderer.compileAsync(warmUp, camera, scene).catch(() => {});
+  // Without KHR_parallel_shader_compile (SwiftShader) compileAsync only warns and compiles:
+  // compile() starts the same work in the GPU process without the warning.
+  if (renderer.extensions.has('KHR_parallel_shader_compile')) renderer.compileAsync(warmUp, camera, scene).catch(() => {});
+  else renderer.compile(warmUp, camera, scene);
 
   return {
     renderer,
@@ -152,6 +155,12 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
       borders.setPatches(patches);
       editor.refresh();
       render();
+    },
+
+    /** Whether the meshes drawn are exactly these solved patches' (the same arrays). */
+    shows(patches) {
+      const meshes = surfaces.children;
+      return meshes.length === patches.length && patches.every((p, k) => meshes[k].geometry.getAttribute('position').array === p.positions);
     },
 
     /** The drawn mesh of the patch `name`, or null. */
