@@ -72,9 +72,13 @@ const mainOutput = Object.values(result.metafile.outputs).find((o) => o.entryPoi
 const preloads = (mainOutput?.imports || []).filter((i) => i.kind === 'import-statement').map((i) => `\n  <link rel="modulepreload" href="./${path.basename(i.path)}">`);
 html = html.replace(/(\n\s*<\/head>)/, `${preloads.join('')}$1`);
 html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
-if (!html.includes('data-worker="./solver-worker.js"')) throw new Error('build-web: web/index.html starts no solver worker');
+if (!html.includes('<script src="./boot.js" data-worker="./solver-worker.js"></script>')) throw new Error('build-web: web/index.html starts no solver worker');
+// boot.js inline: the worker starts as the page's first bytes are parsed, not one round trip
+// later (the static server allows it by its hash).
+const boot = fs.readFileSync(path.join(ROOT, 'web', 'boot.js'), 'utf8').replace(/^\/\/.*\n/gm, '');
+html = html.replace('<script src="./boot.js" data-worker="./solver-worker.js"></script>', () => `<script data-worker="./solver-worker.js">\n${boot}</script>`);
 fs.writeFileSync(path.join(OUT, 'index.html'), html);
-for (const f of ['style.css', 'panel.css', 'load-check.js', 'boot.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
+for (const f of ['style.css', 'panel.css', 'load-check.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
 const RHINO3DM = path.join(ROOT, 'node_modules', 'rhino3dm');
 fs.mkdirSync(path.join(OUT, 'rhino3dm'));
 for (const f of RHINO3DM_FILES) fs.copyFileSync(path.join(RHINO3DM, f), path.join(OUT, 'rhino3dm', f));

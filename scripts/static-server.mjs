@@ -52,10 +52,10 @@ const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;
 // No 'unsafe-eval': the wasm module is linked with -sDYNAMIC_EXECUTION=0, so embind builds
 // its invokers without new Function. lil-gui injects its stylesheet as a <style> element,
 // hence 'unsafe-inline' for styles only (styles cannot run script), and that stylesheet
-// embeds its icon font as a data: URL. The importmap is the one inline script, allowed by
-// its hash.
-function contentSecurityPolicy(importmapHashes) {
-  const hashes = importmapHashes.map((h) => `'sha256-${h}'`);
+// embeds its icon font as a data: URL. The inline scripts (the source page's importmap, the
+// production page's boot script) are allowed by their hashes, nothing else inline.
+function contentSecurityPolicy(inlineHashes) {
+  const hashes = inlineHashes.map((h) => `'sha256-${h}'`);
   return [
     "default-src 'self'", ["script-src 'self' 'wasm-unsafe-eval'", ...hashes].join(' '),
     "style-src 'self' 'unsafe-inline'", "font-src 'self' data:", "img-src 'self' data: blob:",
@@ -73,27 +73,28 @@ const EVAL_WORKER_POLICY = [
   "object-src 'none'", "base-uri 'none'",
 ].join('; ');
 
-// sha256 (base64) of each inline importmap in `html`, as the browser hashes it: the text
-// between the tags with newlines normalised to LF (the HTML parser does that first).
-export function importmapHashes(html) {
-  const re = /<script\b[^>]*\btype\s*=\s*["']?importmap["']?[^>]*>([\s\S]*?)<\/script\s*>/gi;
+// sha256 (base64) of each inline script in `html` (an importmap, the production page's boot
+// script), as the browser hashes it: the text between the tags with newlines normalised to
+// LF (the HTML parser does that first).
+export function inlineScriptHashes(html) {
+  const re = /<script\b(?![^>]*\bsrc\s*=)[^>]*>([\s\S]*?)<\/script\s*>/gi;
   return [...html.matchAll(re)].map((m) =>
     crypto.createHash('sha256').update(m[1].replace(/\r\n?/g, '\n'), 'utf8').digest('base64'));
 }
 
-// The headers of every response, re-read when web/index.html changes so an edited
-// importmap keeps its hash without a restart.
-function securityHeaders(root) {
-  const page = path.join(root, 'web', 'index.html');
+// The headers of every response, re-read when a page changes (web/index.html, the
+// production build's index.html) so an edited inline script keeps its hash without a restart.
+function securityHeaders(root, appDir) {
+  const pages = [path.join(root, 'web', 'index.html'), path.join(appDir, 'index.html')];
   let stamp = null;
   let headers = null;
   return () => {
-    const mtime = fs.statSync(page, { throwIfNoEntry: false })?.mtimeMs ?? -1;
-    if (headers && mtime === stamp) return headers;
-    const html = mtime < 0 ? '' : fs.readFileSync(page, 'utf8');
-    stamp = mtime;
+    const mtimes = pages.map((p) => fs.statSync(p, { throwIfNoEntry: false })?.mtimeMs ?? -1);
+    if (headers && mtimes.join() === stamp) return headers;
+    const hashes = pages.flatMap((p, k) => (mtimes[k] < 0 ? [] : inlineScriptHashes(fs.readFileSync(p, 'utf8'))));
+    stamp = mtimes.join();
     headers = {
-      'Content-Security-Policy': contentSecurityPolicy(importmapHashes(html)),
+      'Content-Security-Policy': contentSecurityPolicy([...new Set(hashes)]),
       'X-Content-Type-Options': 'nosniff',
       'Referrer-Policy': 'no-referrer',
       'Cross-Origin-Opener-Policy': 'same-origin',
@@ -129,7 +130,7 @@ async function inside(base, file) {
 }
 
 function handler(root, wasmDir, appDir) {
-  const security = securityHeaders(root);
+  const security = securityHeaders(root, appDir);
   return (req, res) => {
     for (const [k, v] of Object.entries(security())) res.setHeader(k, v);
     serve(req, res, root, wasmDir, appDir).catch(() => {

@@ -1,8 +1,9 @@
 // Starts the solver worker as soon as the page is parsed, before the page's modules have
 // loaded and run (the worker then loads the wasm module in parallel with them);
 // solver/solver-client.js adopts it. data-worker: the worker's URL, relative to the page
-// (the production build points it at its bundle). A file, not inline: the CSP allows no
-// inline script.
+// (the production build points it at its bundle). The production build inlines this file
+// into its page (scripts/build-web.mjs; the static server allows it by its hash), so the
+// worker starts as the page is parsed, not a round trip later.
 (() => {
   const script = document.currentScript;
   try {

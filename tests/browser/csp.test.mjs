@@ -49,6 +49,21 @@ describe('content security policy', { skip }, () => {
     assert.deepEqual(h.problems, []);
   });
 
+  it('the production page (its boot script inline, allowed by its hash) draws with no violation, its worker solving ahead', async () => {
+    const app = await h.open('/app/#example=you2004-fig4a');
+    const drawn = await hooks(app);
+    assert.equal(drawn.lastError, null, `page reported: ${drawn.lastError}`);
+    assert.equal(drawn.exampleId, 'you2004-fig4a');
+    assert.equal(await app.evaluate(() => window.__pdesurf.lastSolve.solvedAhead), true, 'the inline boot script started the worker with the hash');
+    const html = await (await app.request.get(`${h.base}/app/`)).text();
+    assert.match(html, /<script data-worker="\.\/solver-worker\.js">[^<]*new Worker/, 'boot.js inlined');
+    assert.ok(!html.includes('src="./boot.js"'));
+    assert.deepEqual(await app.evaluate(() => window.__cspViolations), []);
+    assert.deepEqual(cspMessages, []);
+    assert.deepEqual(h.problems, []);
+    await app.close();
+  });
+
   it('refuses an inline event handler', async () => {
     await page.evaluate(() => {
       const img = document.createElement('img');

@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { startServer, importmapHashes } from '../../scripts/static-server.mjs';
+import { startServer, inlineScriptHashes } from '../../scripts/static-server.mjs';
 
 // Raw request, so "../" reaches the server un-normalised (fetch would clean it up).
 function get(port, rawPath, method = 'GET') {
@@ -70,7 +70,7 @@ describe('static server', () => {
     fs.symlinkSync(path.join(tmp, 'secret.js'), path.join(wasm, 'pdesurf.js'));
     fs.mkdirSync(path.join(wasm, 'shim-include'));
     fs.symlinkSync(tmp, path.join(wasm, 'shim-include', 'up'));
-    server = await startServer({ port: 0, root, wasmDir: wasm });
+    server = await startServer({ port: 0, root, wasmDir: wasm, appDir: path.join(root, 'build', 'web') });
     port = server.address().port;
     assert.ok(port > 0);
   });
@@ -182,7 +182,7 @@ describe('static server', () => {
     assert.equal((await get(port, '/node_modules/rhino3dm/rhino3dm.wasm')).headers['content-type'], 'application/wasm');
   });
 
-  it('allows the importmap by its hash, recomputed when index.html changes', async () => {
+  it('allows the inline scripts by their hashes, recomputed when a page changes', async () => {
     const scriptSrc = async () =>
       (await get(port, '/web/')).headers['content-security-policy'].match(/script-src ([^;]*)/)[1];
     assert.ok((await scriptSrc()).split(' ').includes(`'sha256-${sha256(IMPORTMAP)}'`));
@@ -193,7 +193,17 @@ describe('static server', () => {
     const now = (await scriptSrc()).split(' ');
     assert.ok(now.includes(`'sha256-${sha256(changed)}'`));
     assert.ok(!now.includes(`'sha256-${sha256(IMPORTMAP)}'`));
+    // The production page's boot script (scripts/build-web.mjs inlines web/boot.js), beside it.
+    const app = path.join(tmp, 'site', 'build', 'web', 'index.html');
+    const BOOT = '\n(() => { new Worker("./w.js"); })();\n';
+    fs.writeFileSync(app, `<!doctype html><script data-worker="./w.js">${BOOT}</script><script src="./main.js"></script>`);
+    fs.utimesSync(app, new Date(), new Date(Date.now() + 5000));
+    const both = (await scriptSrc()).split(' ');
+    assert.ok(both.includes(`'sha256-${sha256(BOOT)}'`), 'the production page\'s boot script');
+    assert.ok(both.includes(`'sha256-${sha256(changed)}'`), 'and the source page\'s importmap');
+    assert.equal(both.filter((s) => s.startsWith("'sha256-")).length, 2);
     // The browser hashes the text after the parser turned CR LF into LF.
-    assert.deepEqual(importmapHashes('<script type="importmap">{\r\n}</script><script>x</script>'), [sha256('{\n}')]);
+    assert.deepEqual(inlineScriptHashes('<script type="importmap">{\r\n}</script><script data-a="b">x</script><script src="y.js"></script>'),
+      [sha256('{\n}'), sha256('x')], 'every inline script, none with a src');
   });
 });
