@@ -58,13 +58,11 @@ const result = await esbuild.build({
   logLevel: 'warning',
 });
 
-// The page: no importmap (everything is bundled); the examples index and the default
-// example (the first of the index, what a page without a hash opens) fetched while the
-// scripts load.
-const first = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples', 'index.json'), 'utf8')).examples[0].file;
+// The page: no importmap (everything is bundled). The examples are not preloaded: the worker
+// fetches the one it solves ahead, and the page reads the catalogue after its first frame
+// (web/main.js); a preload would hold a connection the worker's files wait for.
 let html = fs.readFileSync(path.join(ROOT, 'web', 'index.html'), 'utf8');
-html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/,
-  `\n  <link rel="preload" href="/examples/index.json" as="fetch" crossorigin>\n  <link rel="preload" href="/examples/${first}" as="fetch" crossorigin>`);
+html = html.replace(/\s*<!--[^>]*-->\s*<script type="importmap">[\s\S]*?<\/script>/, '');
 if (html.includes('importmap')) throw new Error('build-web: could not take the importmap out of web/index.html');
 // Chunks main.js imports statically (three.js, once other chunks loaded on first use share
 // it, e.g. the exporters): preloaded with the page, not one round trip after main.js.

@@ -54,10 +54,6 @@ async function start() {
     onError: (...args) => relay.error(...args),
     onBusy: (ms) => status.busy(ms),
   });
-  // The catalogue and the scene are preloaded by the page (and solved ahead by the worker);
-  // they are read once the first surface is drawn.
-  const loading = loadExamplesAhead(readHash());
-  loading.index.catch(() => {}); // reported below
   try {
     viewer = createViewer(document.getElementById('viewport'), bezier.viewerHandlers, {
       onFirstSurfaceFrame: (at) => {
@@ -72,6 +68,13 @@ async function start() {
   }
   // The example the worker solved ahead is drawn before the page is wired.
   await showSolvedAhead({ solver, viewer, waitMs: FIRST_SURFACE_WAIT_MS });
+  // The catalogue and the scene (the worker fetched its own to solve ahead) are read after
+  // that frame: before it, their requests would only hold connections the worker waits for.
+  const loading = loadExamplesAhead(readHash());
+  // The editor is a chunk of its own: its code is neither fetched nor parsed before that
+  // frame; fetched beside the examples.
+  const editorLoading = import('./editor.js');
+  editorLoading.catch(() => {}); // reported below
   let examples;
   try {
     examples = await loading.index;
@@ -80,10 +83,9 @@ async function start() {
     fail(err);
     return;
   }
-  // The editor is a chunk of its own: its code is neither fetched nor parsed before that frame.
   let editor;
   try {
-    editor = await import('./editor.js');
+    editor = await editorLoading;
   } catch (err) {
     fail(new Error(`cannot load the editor: ${err.message}`));
     return;

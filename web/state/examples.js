@@ -6,7 +6,7 @@ const EXAMPLES_BASE = '/examples/';
 async function fetchJson(url) {
   let res;
   try {
-    res = await fetch(url); // the page preloads the index and the first example
+    res = await fetch(url);
   } catch (err) {
     throw new Error(`cannot fetch ${url}: ${err.message}`);
   }
@@ -36,9 +36,8 @@ export async function loadExampleIndex() {
 let ahead = null; // { file, scene: Promise }
 
 /**
- * A cold start's fetches, begun at once (the index's preload is already under way): the
- * catalogue, then the scene of the example `hash` (state/hash.js readHash) names, else of the
- * first; loadExampleScene then finds that scene under way or done. { index: Promise like
+ * A cold start's fetches, begun at once: the catalogue, then the scene of the example `hash`
+ * (state/hash.js readHash) names, else of the first; loadExampleScene then finds that scene under way or done. { index: Promise like
  * loadExampleIndex's, scene: Promise that settles once the scene is in and never rejects
  * (the load that takes it reports failures) }.
  */
