@@ -75,8 +75,16 @@ if (!html.includes('<script src="./boot.js" data-worker="./solver-worker.js"></s
 // later (the static server allows it by its hash).
 const boot = fs.readFileSync(path.join(ROOT, 'web', 'boot.js'), 'utf8').replace(/^\/\/.*\n/gm, '');
 html = html.replace('<script src="./boot.js" data-worker="./solver-worker.js"></script>', () => `<script data-worker="./solver-worker.js">\n${boot}</script>`);
+// load-check.js inline too, and the two stylesheets as one: fewer requests before the first
+// frame (the page and its worker share six connections).
+const loadCheck = fs.readFileSync(path.join(ROOT, 'web', 'load-check.js'), 'utf8').replace(/^\/\/.*\n/gm, '');
+if (!html.includes('<script src="./load-check.js"></script>')) throw new Error('build-web: web/index.html has no load-check.js');
+html = html.replace('<script src="./load-check.js"></script>', () => `<script>\n${loadCheck}</script>`);
+const STYLES = '<link rel="stylesheet" href="./style.css">\n  <link rel="stylesheet" href="./panel.css">';
+if (!html.includes(STYLES)) throw new Error('build-web: web/index.html does not link style.css and panel.css');
+html = html.replace(STYLES, '<link rel="stylesheet" href="./style.css">');
 fs.writeFileSync(path.join(OUT, 'index.html'), html);
-for (const f of ['style.css', 'panel.css', 'load-check.js']) fs.copyFileSync(path.join(ROOT, 'web', f), path.join(OUT, f));
+fs.writeFileSync(path.join(OUT, 'style.css'), ['style.css', 'panel.css'].map((f) => fs.readFileSync(path.join(ROOT, 'web', f), 'utf8')).join('\n'));
 const RHINO3DM = path.join(ROOT, 'node_modules', 'rhino3dm');
 fs.mkdirSync(path.join(OUT, 'rhino3dm'));
 for (const f of RHINO3DM_FILES) fs.copyFileSync(path.join(RHINO3DM, f), path.join(OUT, 'rhino3dm', f));
