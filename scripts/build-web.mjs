@@ -38,11 +38,12 @@ const rhino3dmUrl = {
 // Three bundles: the page, the solver worker it starts (new URL('./solver-worker.js',
 // import.meta.url) resolves beside the page's bundle), and the .3dm writer's worker
 // (web/cad/export-3dm.js starts ./rhino-worker.js the same way). The wasm glue
-// (/wasm/pdesurf.js) is imported at run time and stays a file of its own.
+// (/wasm/pdesurf.js) is imported at run time and stays a file of its own. The solver worker
+// is one file, sharing no chunk with the page: a cold start's worker then evaluates after one
+// request, not after a second round trip for its chunks.
 const result = await esbuild.build({
   entryPoints: {
     main: path.join(ROOT, 'web', 'main.js'),
-    'solver-worker': path.join(ROOT, 'web', 'solver', 'solver-worker.js'),
     'rhino-worker': path.join(ROOT, 'web', 'cad', 'rhino-worker.js'),
   },
   plugins: [rhino3dmUrl],
@@ -51,6 +52,17 @@ const result = await esbuild.build({
   format: 'esm',
   splitting: true, // what loads on first use (the link inflater) goes to a chunk of its own
   chunkNames: 'chunk-[hash]',
+  minify: true,
+  target: 'es2022',
+  legalComments: 'linked',
+  metafile: true,
+  logLevel: 'warning',
+});
+const workerResult = await esbuild.build({
+  entryPoints: { 'solver-worker': path.join(ROOT, 'web', 'solver', 'solver-worker.js') },
+  outdir: OUT,
+  bundle: true,
+  format: 'esm',
   minify: true,
   target: 'es2022',
   legalComments: 'linked',
@@ -109,4 +121,4 @@ for (const f of ['pdesurf.js', 'pdesurf.wasm']) {
 const rhino = RHINO3DM_FILES.map((f) => compress(path.join(OUT, 'rhino3dm', f), 9));
 const kib = (list, key) => (list.reduce((sum, s) => sum + s[key], 0) / 1024).toFixed(0);
 console.log(`build-web: ${path.relative(ROOT, OUT)}/ written; ${sizes.length} files, ${kib(sizes, 'raw')} KiB, ${kib(sizes, 'br')} KiB brotli` +
-  ` (${Object.keys(result.metafile.outputs).length} bundle outputs); rhino3dm/ on first .3dm export: ${kib(rhino, 'raw')} KiB, ${kib(rhino, 'br')} KiB brotli`);
+  ` (${Object.keys(result.metafile.outputs).length + Object.keys(workerResult.metafile.outputs).length} bundle outputs); rhino3dm/ on first .3dm export: ${kib(rhino, 'raw')} KiB, ${kib(rhino, 'br')} KiB brotli`);
