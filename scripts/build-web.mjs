@@ -82,16 +82,17 @@ const mainOutput = Object.values(result.metafile.outputs).find((o) => o.entryPoi
 const preloads = (mainOutput?.imports || []).filter((i) => i.kind === 'import-statement').map((i) => `\n  <link rel="modulepreload" href="./${path.basename(i.path)}">`);
 html = html.replace(/(\n\s*<\/head>)/, `${preloads.join('')}$1`);
 html = html.replace('data-worker="./solver/solver-worker.js"', 'data-worker="./solver-worker.js"');
-if (!html.includes('<script src="./boot.js" data-worker="./solver-worker.js"></script>')) throw new Error('build-web: web/index.html starts no solver worker');
-// boot.js inline: the worker starts as the page's first bytes are parsed, not one round trip
-// later (the static server allows it by its hash).
-const boot = fs.readFileSync(path.join(ROOT, 'web', 'boot.js'), 'utf8').replace(/^\/\/.*\n/gm, '');
-html = html.replace('<script src="./boot.js" data-worker="./solver-worker.js"></script>', () => `<script data-worker="./solver-worker.js">\n${boot}</script>`);
-// load-check.js inline too, and the two stylesheets as one: fewer requests before the first
-// frame (the page and its worker share six connections).
-const loadCheck = fs.readFileSync(path.join(ROOT, 'web', 'load-check.js'), 'utf8').replace(/^\/\/.*\n/gm, '');
-if (!html.includes('<script src="./load-check.js"></script>')) throw new Error('build-web: web/index.html has no load-check.js');
-html = html.replace('<script src="./load-check.js"></script>', () => `<script>\n${loadCheck}</script>`);
+// boot.js and load-check.js inline (the static server allows them by their hashes), and the
+// two stylesheets as one: fewer requests before the first frame (the page and its worker share
+// six connections), and the worker starts as the page's first bytes are parsed.
+function inlineScript(file, attributes = '') {
+  const tag = `<script src="./${file}"${attributes}></script>`;
+  if (!html.includes(tag)) throw new Error(`build-web: web/index.html has no ${tag}`);
+  const code = fs.readFileSync(path.join(ROOT, 'web', file), 'utf8').replace(/^\/\/.*\n/gm, ''); // its comments
+  html = html.replace(tag, () => `<script${attributes}>\n${code}</script>`);
+}
+inlineScript('boot.js', ' data-worker="./solver-worker.js"');
+inlineScript('load-check.js');
 const STYLES = '<link rel="stylesheet" href="./style.css">\n  <link rel="stylesheet" href="./panel.css">';
 if (!html.includes(STYLES)) throw new Error('build-web: web/index.html does not link style.css and panel.css');
 html = html.replace(STYLES, '<link rel="stylesheet" href="./style.css">');

@@ -223,24 +223,24 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
 
   // drawn: the first scene's surface, already drawn before its panel was built.
   function applyResult(result, job, ms, drawn = false) {
-    if (presentLater && viewer.shows(result.patches)) {
-      // Drawn, and its frame shown, before the page was wired (first-surface.js).
-      cameraPending = null;
-      fitPending = false;
-      hooks.surfaceBeforePanel = true;
-      flushPresent();
-      applyResult(result, job, ms, true);
-      return;
-    }
     if (presentLater) {
-      draw(result, job);
+      // The first scene: its surface on screen first, then its panel (present).
       hooks.surfaceBeforePanel = true;
       const token = sceneToken;
-      viewer.afterNextFrame(() => {
+      const thenPresent = () => {
         if (token !== sceneToken) return; // another scene was opened meanwhile
         flushPresent();
         applyResult(result, job, ms, true);
-      });
+      };
+      if (viewer.shows(result.patches)) {
+        // Drawn, and its frame shown, before the page was wired (first-surface.js), framed.
+        cameraPending = null;
+        fitPending = false;
+        thenPresent();
+      } else {
+        draw(result, job);
+        viewer.afterNextFrame(thenPresent);
+      }
       return;
     }
     hooks.solveCount++;

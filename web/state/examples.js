@@ -37,9 +37,9 @@ let ahead = null; // { file, scene: Promise }
 
 /**
  * A cold start's fetches, begun at once: the catalogue, then the scene of the example `hash`
- * (state/hash.js readHash) names, else of the first; loadExampleScene then finds that scene under way or done. { index: Promise like
- * loadExampleIndex's, scene: Promise that settles once the scene is in and never rejects
- * (the load that takes it reports failures) }.
+ * (state/hash.js readHash) names, else of the first; loadExampleScene then finds that scene
+ * under way or done. { index: Promise like loadExampleIndex's, scene: Promise that settles
+ * once the scene is in and never rejects (the load that takes it reports failures) }.
  */
 export function loadExamplesAhead(hash) {
   const index = loadExampleIndex();

@@ -38,29 +38,25 @@ export function createGallery(root, examples, onOpen, layout) {
   const list = el('nav', 'gallery-list');
   list.setAttribute('aria-label', 'examples by paper');
   const items = new Map(); // id -> { li, button }
-  // The entries are built at the first setActive: on a cold start that comes after the first
-  // surface is drawn (scene-session.js), so their text is not laid out before it.
-  function buildEntries() {
-    for (const [paper, entries] of groupByPaper(examples)) {
-      const section = el('section', 'gallery-group');
-      section.append(el('h2', 'gallery-paper', paper));
-      const ul = el('ul');
-      for (const e of entries) {
-        const li = el('li');
-        const button = el('button', 'gallery-item');
-        button.type = 'button';
-        button.dataset.example = e.id;
-        const figure = e.source && typeof e.source.figure === 'string' ? e.source.figure : '';
-        if (figure) button.append(el('span', 'gallery-figure', figure));
-        button.append(el('span', 'gallery-caption', e.title));
-        button.addEventListener('click', () => onOpen(e.id));
-        li.append(button);
-        ul.append(li);
-        items.set(e.id, { li, button });
-      }
-      section.append(ul);
-      list.append(section);
+  for (const [paper, entries] of groupByPaper(examples)) {
+    const section = el('section', 'gallery-group');
+    section.append(el('h2', 'gallery-paper', paper));
+    const ul = el('ul');
+    for (const e of entries) {
+      const li = el('li');
+      const button = el('button', 'gallery-item');
+      button.type = 'button';
+      button.dataset.example = e.id;
+      const figure = e.source && typeof e.source.figure === 'string' ? e.source.figure : '';
+      if (figure) button.append(el('span', 'gallery-figure', figure));
+      button.append(el('span', 'gallery-caption', e.title));
+      button.addEventListener('click', () => onOpen(e.id));
+      li.append(button);
+      ul.append(li);
+      items.set(e.id, { li, button });
     }
+    section.append(ul);
+    list.append(section);
   }
   root.append(head, list);
 
@@ -85,7 +81,6 @@ export function createGallery(root, examples, onOpen, layout) {
   return {
     /** Mark the open example (null: a scene from a link) and show its description. */
     setActive(id, text) {
-      if (items.size === 0) buildEntries();
       if (active) {
         active.button.classList.remove('active');
         active.button.removeAttribute('aria-current');
