@@ -6,6 +6,10 @@
 
 #include "common/vector_clones.hpp"
 
+#ifdef __wasm_simd128__
+#include <wasm_simd128.h>
+#endif
+
 namespace pdesurf {
 
 namespace {
@@ -54,15 +58,30 @@ float clampToFloat(float x) {
   return low > 3e38f ? 3e38f : low;
 }
 
-// out[3k..3k+2] = (a[k], b[k], c[k]): four points per step in three vector shuffles (neither
-// GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic vectors:
-// SSE natively, simd128 in wasm, scalar code without either.
-PDESURF_INLINE void interleave3(const float* __restrict a, const float* __restrict b, const float* __restrict c, float* __restrict out, size_t n) {
-  typedef float Float4 __attribute__((vector_size(16)));
+typedef float Float4 __attribute__((vector_size(16)));
+typedef double Double2 __attribute__((vector_size(16)));
+
+// Four doubles from p as floats. In wasm, LLVM 14 turns a vectorised double → float
+// conversion into extract, demote and store per lane; f32x4.demote_f64x2_zero is said outright.
+PDESURF_INLINE Float4 toFloat4(const double* p) {
+#ifdef __wasm_simd128__
+  const v128_t low = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p)), high = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p + 2));
+  return reinterpret_cast<Float4>(wasm_i64x2_shuffle(low, high, 0, 2));
+#else
+  typedef float Float2 __attribute__((vector_size(8)));
+  Double2 low, high;
+  std::memcpy(&low, p, 16), std::memcpy(&high, p + 2, 16);
+  return __builtin_shufflevector(__builtin_convertvector(low, Float2), __builtin_convertvector(high, Float2), 0, 1, 2, 3);
+#endif
+}
+
+// out[3k..3k+2] = (a[k], b[k], c[k]) as floats: four points per step in three vector shuffles
+// (neither GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic
+// vectors: SSE natively, simd128 in wasm, scalar code without either.
+PDESURF_INLINE void interleave3(const double* __restrict a, const double* __restrict b, const double* __restrict c, float* __restrict out, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
-    Float4 x, y, z;
-    std::memcpy(&x, a + k, 16), std::memcpy(&y, b + k, 16), std::memcpy(&z, c + k, 16);
+    const Float4 x = toFloat4(a + k), y = toFloat4(b + k), z = toFloat4(c + k);
     const Float4 xyLow = __builtin_shufflevector(x, y, 0, 4, 1, 5);   // x0 y0 x1 y1
     const Float4 xyHigh = __builtin_shufflevector(x, y, 2, 6, 3, 7);  // x2 y2 x3 y3
     const Float4 yzOne = __builtin_shufflevector(xyLow, z, 3, 5, 3, 5);  // y1 z1 y1 z1
@@ -71,7 +90,18 @@ PDESURF_INLINE void interleave3(const float* __restrict a, const float* __restri
     const Float4 o2 = __builtin_shufflevector(z, xyHigh, 2, 6, 7, 3);   // z2 x3 y3 z3
     std::memcpy(out + 3 * k, &o0, 16), std::memcpy(out + 3 * k + 4, &o1, 16), std::memcpy(out + 3 * k + 8, &o2, 16);
   }
-  for (; k < n; ++k) out[3 * k] = a[k], out[3 * k + 1] = b[k], out[3 * k + 2] = c[k];
+  for (; k < n; ++k)
+    out[3 * k] = static_cast<float>(a[k]), out[3 * k + 1] = static_cast<float>(b[k]), out[3 * k + 2] = static_cast<float>(c[k]);
+}
+
+// out[k] = a[k] as a float.
+PDESURF_INLINE void toFloats(const double* __restrict a, float* __restrict out, size_t n) {
+  size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const Float4 x = toFloat4(a + k);
+    std::memcpy(out + k, &x, 16);
+  }
+  for (; k < n; ++k) out[k] = static_cast<float>(a[k]);
 }
 
 // One chunk in two passes. The first is arithmetic on doubles only, so it vectorises (the
@@ -82,7 +112,7 @@ PDESURF_INLINE void interleave3(const float* __restrict a, const float* __restri
 // or with a curvature beyond ±3e38).
 template <bool Curvature>
 PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict P, float* __restrict Nf, float* __restrict H, float* __restrict K) {
-  alignas(64) float fx[kChunk], fy[kChunk], fz[kChunk], fnx[kChunk], fny[kChunk], fnz[kChunk];
+  alignas(64) double unitX[kChunk], unitY[kChunk], unitZ[kChunk], mean[Curvature ? kChunk : 1], gauss[Curvature ? kChunk : 1];
   // Local copies: GCC reloads a struct's pointer members inside the loop and gives up.
   const double *__restrict x = s.x, *__restrict y = s.y, *__restrict z = s.z;
   const double *__restrict xu = s.xu, *__restrict yu = s.yu, *__restrict zu = s.zu;
@@ -107,8 +137,7 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
     flagged += (hasNormal ? 0.0 : 1.0) + (reach <= kFloatMax ? 0.0 : 1.0);
     const double inv = 1.0 / std::sqrt(hasNormal ? det : 1.0);
     const double unit = hasNormal ? inv : 0.0;
-    fx[k] = static_cast<float>(x[k]), fy[k] = static_cast<float>(y[k]), fz[k] = static_cast<float>(z[k]);
-    fnx[k] = static_cast<float>(nx * unit), fny[k] = static_cast<float>(ny * unit), fnz[k] = static_cast<float>(nz * unit);
+    unitX[k] = nx * unit, unitY[k] = ny * unit, unitZ[k] = nz * unit;
     if constexpr (Curvature) {
       // A pole: the cross product vanishes against the larger speed (sin t = 1e-16 at t = π
       // leaves X_v = 1e-16 R, not 0: its curvature would divide rounding by rounding).
@@ -120,16 +149,15 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
       const double L = (xuu[k] * nx + yuu[k] * ny + zuu[k] * nz) * inv;
       const double M = (xuv[k] * nx + yuv[k] * ny + zuv[k] * nz) * inv;
       const double N = (xvv[k] * nx + yvv[k] * ny + zvv[k] * nz) * inv;
-      const double gauss = (L * N - M * M) * invDet;
-      const double mean = 0.5 * (E * N - 2 * F * M + G * L) * invDet;
+      gauss[k] = (L * N - M * M) * invDet;
+      mean[k] = 0.5 * (E * N - 2 * F * M + G * L) * invDet;
       // Beyond ±3e38 (or NaN): the chunk is flagged and frameRow clamps it.
-      flagged += std::fabs(mean) <= 3e38 && std::fabs(gauss) <= 3e38 ? 0.0 : 1.0;
-      H[k] = static_cast<float>(mean);
-      K[k] = static_cast<float>(gauss);
+      flagged += std::fabs(mean[k]) <= 3e38 && std::fabs(gauss[k]) <= 3e38 ? 0.0 : 1.0;
     }
   }
-  interleave3(fx, fy, fz, P, len);
-  interleave3(fnx, fny, fnz, Nf, len);
+  interleave3(x, y, z, P, len);
+  interleave3(unitX, unitY, unitZ, Nf, len);
+  if constexpr (Curvature) toFloats(mean, H, len), toFloats(gauss, K, len);
   return flagged != 0;
 }
 
