@@ -69,9 +69,15 @@ export async function orbitDrag(page, { steps = 60, pixels = 2 } = {}) {
   return { dragMs, ...during, fps: (1000 * during.frames) / dragMs };
 }
 
-export async function dragSurface(page, name, { steps = 60, pixels = 2 } = {}) {
+/** Select the patch and show its placement gizmo in move mode. */
+export async function showGizmo(page, name) {
   await page.locator(`#panel [data-patch="${name}"] [data-action="select"]`).click();
   await page.locator('#panel [data-placement="gizmo"] select').selectOption('move');
+}
+
+/** Drag the patch's x arrow; shown: its gizmo is already up (showGizmo). */
+export async function dragSurface(page, name, { steps = 60, pixels = 2, shown = false } = {}) {
+  if (!shown) await showGizmo(page, name);
   const at = await findArrow(page);
   const solvesBefore = await page.evaluate(() => window.__pdesurf.solveCount);
   await watchFrames(page);
