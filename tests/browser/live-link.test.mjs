@@ -29,7 +29,6 @@ async function linkWhere(page, ok = () => true) {
   }
 }
 
-/** Drag the r0 slider by dx pixels with the mouse, as a user does. */
 // The hooks once the page has stopped solving (no new solve for 400 ms, at most 10 s): a
 // slider drag solves some of the values it passes, and the surface its link must reproduce
 // is the last one drawn, not the first after the drag began.
@@ -45,6 +44,7 @@ async function settled(page) {
   return hooks(page);
 }
 
+/** Drag the r0 slider by dx pixels with the mouse, as a user does. */
 async function dragSlider(page, dx) {
   const box = await page.locator('#panel [data-param="r0"] .slider').boundingBox();
   const y = box.y + box.height / 2;
