@@ -6,24 +6,42 @@ namespace pdesurf {
 
 namespace {
 
-// One term's contribution: out[q][i] (+)= G^(a_q)(u_i) · g^(b_q)(v_j) for the Q quantities
-// at once, so each G derivative is read once; the first term assigns (no zero fill). G points
-// at the piece's first point of G; G', G'' follow `stride` apart.
-template <int Q, bool First>
-PDESURF_INLINE void addTerm(const std::array<double*, 6>& outRows, const double* G, size_t stride, const double* gv, size_t len) {
+// Terms k and, with Two, k + 1: out[q][i] (+)= Σ G^(a_q)(u_i) · g^(b_q)(v_j) for the Q
+// quantities at once, so each G derivative is read once and each output is written once per
+// two terms (the pass is bound by its stores); the first pass assigns (no zero fill). G
+// points at the piece's first point of term k's G; G', G'' follow `stride` apart, and term
+// k + 1's G `depth · stride` after term k's.
+template <int Q, bool First, bool Two>
+PDESURF_INLINE void addTerms(const std::array<double*, 6>& outRows, const double* G, size_t stride, int depth, const double* gv, size_t len) {
   double* __restrict out[Q];
-  const double* __restrict Gq[Q];
-  double g[Q];
-  for (int q = 0; q < Q; ++q)
+  const double *__restrict Gq[Q], *__restrict Hq[Q];
+  double g[Q], h[Q];
+  for (int q = 0; q < Q; ++q) {
     out[q] = outRows[q], Gq[q] = G + kRowDerivative[q][0] * stride, g[q] = gv[kRowDerivative[q][1]];
+    Hq[q] = Gq[q] + (Two ? depth * stride : 0), h[q] = Two ? gv[depth + kRowDerivative[q][1]] : 0.0;
+  }
 #pragma omp simd
   for (size_t i = 0; i < len; ++i)
     for (int q = 0; q < Q; ++q) {
+      double sum = Gq[q][i] * g[q];
+      if constexpr (Two) sum += Hq[q][i] * h[q];
       if constexpr (First)
-        out[q][i] = Gq[q][i] * g[q];
+        out[q][i] = sum;
       else
-        out[q][i] += Gq[q][i] * g[q];
+        out[q][i] += sum;
     }
+}
+
+template <int Q>
+PDESURF_INLINE void addAllTerms(const std::array<double*, 6>& out, const double* uTab, size_t m, int D, int T, const double* gv, size_t len) {
+  for (int k = 0; k < T; k += 2) {
+    const double* G = uTab + static_cast<size_t>(D * k) * m;
+    const bool first = k == 0, two = k + 1 < T;
+    if (first)
+      two ? addTerms<Q, true, true>(out, G, m, D, gv + D * k, len) : addTerms<Q, true, false>(out, G, m, D, gv + D * k, len);
+    else
+      two ? addTerms<Q, false, true>(out, G, m, D, gv + D * k, len) : addTerms<Q, false, false>(out, G, m, D, gv + D * k, len);
+  }
 }
 
 PDESURF_INLINE void combinePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
@@ -36,13 +54,10 @@ PDESURF_INLINE void combinePiece(const Tabulation& t, int j, size_t i0, size_t l
     if (T == 0)
       for (int q = 0; q < Q; ++q) std::fill(out[q], out[q] + len, 0.0);
     const double* gv = t.vTab[c].data() + static_cast<size_t>(j) * D * T;
-    for (int k = 0; k < T; ++k) {
-      const double* G = t.uTab[c].data() + static_cast<size_t>(D * k) * m + i0;
-      if (Q == 6)
-        k == 0 ? addTerm<6, true>(out, G, m, gv + D * k, len) : addTerm<6, false>(out, G, m, gv + D * k, len);
-      else
-        k == 0 ? addTerm<3, true>(out, G, m, gv + D * k, len) : addTerm<3, false>(out, G, m, gv + D * k, len);
-    }
+    if (Q == 6)
+      addAllTerms<6>(out, t.uTab[c].data() + i0, m, D, T, gv, len);
+    else
+      addAllTerms<3>(out, t.uTab[c].data() + i0, m, D, T, gv, len);
   }
 }
 

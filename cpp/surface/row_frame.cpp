@@ -68,10 +68,10 @@ PDESURF_INLINE Float4 toFloat4(const double* p) {
   const v128_t low = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p)), high = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p + 2));
   return reinterpret_cast<Float4>(wasm_i64x2_shuffle(low, high, 0, 2));
 #else
-  typedef float Float2 __attribute__((vector_size(8)));
-  Double2 low, high;
-  std::memcpy(&low, p, 16), std::memcpy(&high, p + 2, 16);
-  return __builtin_shufflevector(__builtin_convertvector(low, Float2), __builtin_convertvector(high, Float2), 0, 1, 2, 3);
+  typedef double Double4 __attribute__((vector_size(32)));
+  Double4 v;
+  std::memcpy(&v, p, 32);
+  return __builtin_convertvector(v, Float4);
 #endif
 }
 
@@ -82,12 +82,12 @@ PDESURF_INLINE void interleave3(const double* __restrict a, const double* __rest
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
     const Float4 x = toFloat4(a + k), y = toFloat4(b + k), z = toFloat4(c + k);
-    const Float4 xyLow = __builtin_shufflevector(x, y, 0, 4, 1, 5);   // x0 y0 x1 y1
-    const Float4 xyHigh = __builtin_shufflevector(x, y, 2, 6, 3, 7);  // x2 y2 x3 y3
-    const Float4 yzOne = __builtin_shufflevector(xyLow, z, 3, 5, 3, 5);  // y1 z1 y1 z1
-    const Float4 o0 = __builtin_shufflevector(xyLow, z, 0, 1, 4, 2);    // x0 y0 z0 x1
-    const Float4 o1 = __builtin_shufflevector(yzOne, xyHigh, 0, 1, 4, 5);  // y1 z1 x2 y2
-    const Float4 o2 = __builtin_shufflevector(z, xyHigh, 2, 6, 7, 3);   // z2 x3 y3 z3
+    const Float4 a = __builtin_shufflevector(x, y, 0, 2, 4, 6);  // x0 x2 y0 y2
+    const Float4 b = __builtin_shufflevector(y, z, 1, 3, 5, 7);  // y1 y3 z1 z3
+    const Float4 c = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
+    const Float4 o0 = __builtin_shufflevector(a, c, 0, 2, 4, 6);  // x0 y0 z0 x1
+    const Float4 o1 = __builtin_shufflevector(b, a, 0, 2, 5, 7);  // y1 z1 x2 y2
+    const Float4 o2 = __builtin_shufflevector(c, b, 1, 3, 5, 7);  // z2 x3 y3 z3
     std::memcpy(out + 3 * k, &o0, 16), std::memcpy(out + 3 * k + 4, &o1, 16), std::memcpy(out + 3 * k + 8, &o2, 16);
   }
   for (; k < n; ++k)
