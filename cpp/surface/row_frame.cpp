@@ -59,10 +59,11 @@ float clampToFloat(float x) {
 }
 
 typedef float Float4 __attribute__((vector_size(16)));
-typedef double Double2 __attribute__((vector_size(16)));
 
 // Four doubles from p as floats. In wasm, LLVM 14 turns a vectorised double → float
 // conversion into extract, demote and store per lane; f32x4.demote_f64x2_zero is said outright.
+// Natively one 4-wide conversion (one vcvtpd2ps with AVX2): GCC turns two 2-wide ones into
+// two converts of zero-extended halves plus moves.
 PDESURF_INLINE Float4 toFloat4(const double* p) {
 #ifdef __wasm_simd128__
   const v128_t low = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p)), high = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p + 2));
@@ -75,19 +76,21 @@ PDESURF_INLINE Float4 toFloat4(const double* p) {
 #endif
 }
 
-// out[3k..3k+2] = (a[k], b[k], c[k]) as floats: four points per step in three vector shuffles
+// out[3k..3k+2] = (a[k], b[k], c[k]) as floats: four points per step in six vector shuffles
 // (neither GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic
 // vectors: SSE natively, simd128 in wasm, scalar code without either.
 PDESURF_INLINE void interleave3(const double* __restrict a, const double* __restrict b, const double* __restrict c, float* __restrict out, size_t n) {
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
     const Float4 x = toFloat4(a + k), y = toFloat4(b + k), z = toFloat4(c + k);
-    const Float4 a = __builtin_shufflevector(x, y, 0, 2, 4, 6);  // x0 x2 y0 y2
-    const Float4 b = __builtin_shufflevector(y, z, 1, 3, 5, 7);  // y1 y3 z1 z3
-    const Float4 c = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
-    const Float4 o0 = __builtin_shufflevector(a, c, 0, 2, 4, 6);  // x0 y0 z0 x1
-    const Float4 o1 = __builtin_shufflevector(b, a, 0, 2, 5, 7);  // y1 z1 x2 y2
-    const Float4 o2 = __builtin_shufflevector(c, b, 1, 3, 5, 7);  // z2 x3 y3 z3
+    // Each shuffle takes two lanes from either source: one shufps (SSE) or i8x16.shuffle
+    // that V8 lowers to one.
+    const Float4 xyEven = __builtin_shufflevector(x, y, 0, 2, 4, 6);     // x0 x2 y0 y2
+    const Float4 yzOdd = __builtin_shufflevector(y, z, 1, 3, 5, 7);      // y1 y3 z1 z3
+    const Float4 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
+    const Float4 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 4, 6);  // x0 y0 z0 x1
+    const Float4 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 5, 7);      // y1 z1 x2 y2
+    const Float4 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 5, 7);   // z2 x3 y3 z3
     std::memcpy(out + 3 * k, &o0, 16), std::memcpy(out + 3 * k + 4, &o1, 16), std::memcpy(out + 3 * k + 8, &o2, 16);
   }
   for (; k < n; ++k)
