@@ -206,22 +206,16 @@ int main() {
   const Scene scene = parseScene(readText(dir + "/you2004-fig4a.json"));
   const SeparableSurface blend = solvePatch(*scene.firstPde()).surface;
   // The floor: a memcpy of the bytes the reused path writes, positions and normals (24 per
-  // vertex; uvs and indices are written only when the grid changes). Natively on a CPU with
-  // AVX2 the rows are measured twice: with the AVX2 copy of the per-vertex loops and with the
-  // baseline copy, 128 bits wide as wasm's simd128.
+  // vertex; uvs and indices are written only when the grid changes). Natively the rows are
+  // measured with every copy of the per-vertex loops the CPU runs: the baseline copy, 128
+  // bits wide as wasm's simd128, then AVX2 and AVX-512 where there are.
   std::printf("\ntessellation of you2004-fig4a's blend (new mesh: + uvs, indices; reused: positions, normals;\n"
               "+curvature: reused, with mean and Gaussian curvature)\n");
   std::printf("%-8s %-10s %14s %12s %14s %16s %14s %10s\n", "vectors", "grid", "new mesh [ms]", "reused [ms]", "Mvertices/s",
               "+curvature [ms]", "memcpy [ms]", "x memcpy");
-  std::vector<bool> copies{false};
-  if (wideVectors()) copies.push_back(true);
-  for (bool baseline : copies) {
-    useBaselineVectors(baseline);
-#ifdef __EMSCRIPTEN__
-    const char* label = "simd128";
-#else
-    const char* label = wideVectors() ? "avx2" : "sse2";
-#endif
+  for (VectorCopy copy : availableVectorCopies()) {
+    limitVectorCopy(copy);
+    const char* label = vectorCopyName(copy);
     for (int n : {64, 256, 1024}) {
       const Mesh probe = tessellate(blend, n, n);
       const size_t bytes = (probe.positions.size() + probe.normals.size()) * sizeof(float);
@@ -245,7 +239,7 @@ int main() {
                   withCurvature * 1e3, floor * 1e3, t / floor);
     }
   }
-  useBaselineVectors(false);
+  limitVectorCopy(VectorCopy::Avx512);
 
   // What analysis adds to a page re-solve at 256² (every patch solved with warm caches and
   // tessellated into reused meshes): curvature per vertex, the join report (256 points per

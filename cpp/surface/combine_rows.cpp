@@ -61,17 +61,16 @@ PDESURF_INLINE void combinePiece(const Tabulation& t, int j, size_t i0, size_t l
   }
 }
 
-#ifdef PDESURF_AVX2_COPY
+void combinePieceBaseline(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) { combinePiece(t, j, i0, len, row); }
+#ifdef PDESURF_VECTOR_COPIES
 PDESURF_AVX2 void combinePieceAvx2(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) { combinePiece(t, j, i0, len, row); }
+PDESURF_AVX512 void combinePieceAvx512(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) { combinePiece(t, j, i0, len, row); }
 #endif
 
 }  // namespace
 
 void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
-#ifdef PDESURF_AVX2_COPY
-  if (wideVectors()) return combinePieceAvx2(t, j, i0, len, row);
-#endif
-  combinePiece(t, j, i0, len, row);
+  PDESURF_DISPATCH(combinePiece, t, j, i0, len, row);
 }
 
 }  // namespace pdesurf

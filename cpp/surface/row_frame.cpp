@@ -14,7 +14,7 @@ namespace pdesurf {
 
 namespace {
 
-constexpr size_t kChunk = kFramePiece;
+constexpr size_t kChunk = 64;
 constexpr double kFloatMax = 3.4028234663852886e38, kDoubleMax = 1.7976931348623157e308;
 constexpr unsigned kPole = 1, kOutOfRange = 2, kDegenerate = 4;
 
@@ -76,25 +76,59 @@ PDESURF_INLINE Float4 toFloat4(const double* p) {
 #endif
 }
 
-// out[3k..3k+2] = (a[k], b[k], c[k]) as floats: four points per step in six vector shuffles
-// (neither GCC nor clang vectorises a stride-3 store from separate arrays by itself). Generic
-// vectors: SSE natively, simd128 in wasm, scalar code without either.
-PDESURF_INLINE void interleave3(const double* __restrict a, const double* __restrict b, const double* __restrict c, float* __restrict out, size_t n) {
+// out[0..11] = (a[k], b[k], c[k]) as floats for k = 0..3, in six vector shuffles (neither GCC
+// nor clang vectorises a stride-3 store from separate arrays by itself). Generic vectors: SSE
+// natively, simd128 in wasm, scalar code without either.
+PDESURF_INLINE void interleave4(const double* a, const double* b, const double* c, float* out) {
+  const Float4 x = toFloat4(a), y = toFloat4(b), z = toFloat4(c);
+  // Each shuffle takes two lanes from either source: one shufps (SSE) or i8x16.shuffle
+  // that V8 lowers to one.
+  const Float4 xyEven = __builtin_shufflevector(x, y, 0, 2, 4, 6);     // x0 x2 y0 y2
+  const Float4 yzOdd = __builtin_shufflevector(y, z, 1, 3, 5, 7);      // y1 y3 z1 z3
+  const Float4 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
+  const Float4 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 4, 6);  // x0 y0 z0 x1
+  const Float4 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 5, 7);      // y1 z1 x2 y2
+  const Float4 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 5, 7);   // z2 x3 y3 z3
+  std::memcpy(out, &o0, 16), std::memcpy(out + 4, &o1, 16), std::memcpy(out + 8, &o2, 16);
+}
+
+typedef float Float8 __attribute__((vector_size(32)));
+
+// The same for eight points with 256-bit vectors (the AVX2 and AVX-512 copies): shufps works
+// within each 128-bit half, so the six shuffles interleave points 0-3 and 4-7 at once, and
+// three cross-half permutes put the outputs in order.
+PDESURF_INLINE void interleave8(const double* a, const double* b, const double* c, float* out) {
+  typedef double Double8 __attribute__((vector_size(64)));
+  Double8 da, db, dc;
+  std::memcpy(&da, a, 64), std::memcpy(&db, b, 64), std::memcpy(&dc, c, 64);
+  const Float8 x = __builtin_convertvector(da, Float8), y = __builtin_convertvector(db, Float8), z = __builtin_convertvector(dc, Float8);
+  const Float8 xyEven = __builtin_shufflevector(x, y, 0, 2, 8, 10, 4, 6, 12, 14);
+  const Float8 yzOdd = __builtin_shufflevector(y, z, 1, 3, 9, 11, 5, 7, 13, 15);
+  const Float8 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 9, 11, 4, 6, 13, 15);
+  const Float8 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 8, 10, 4, 6, 12, 14);
+  const Float8 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 9, 11, 4, 6, 13, 15);
+  const Float8 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 9, 11, 5, 7, 13, 15);
+  const Float8 w0 = __builtin_shufflevector(o0, o1, 0, 1, 2, 3, 8, 9, 10, 11);
+  const Float8 w1 = __builtin_shufflevector(o2, o0, 0, 1, 2, 3, 12, 13, 14, 15);
+  const Float8 w2 = __builtin_shufflevector(o1, o2, 4, 5, 6, 7, 12, 13, 14, 15);
+  std::memcpy(out, &w0, 32), std::memcpy(out + 8, &w1, 32), std::memcpy(out + 16, &w2, 32);
+}
+
+// P[3k..3k+2] = (x[k], y[k], z[k]) and N[3k..3k+2] = (nx[k], ny[k], nz[k]) as floats, the two
+// written side by side: two output streams advancing together take about half the time of
+// one written after the other in pieces (24 MB at 1024², measured on an EPYC VM).
+template <int Lanes>
+PDESURF_INLINE void interleaveBoth(const double* __restrict x, const double* __restrict y, const double* __restrict z,
+                                   const double* __restrict nx, const double* __restrict ny, const double* __restrict nz,
+                                   float* __restrict P, float* __restrict N, size_t n) {
   size_t k = 0;
-  for (; k + 4 <= n; k += 4) {
-    const Float4 x = toFloat4(a + k), y = toFloat4(b + k), z = toFloat4(c + k);
-    // Each shuffle takes two lanes from either source: one shufps (SSE) or i8x16.shuffle
-    // that V8 lowers to one.
-    const Float4 xyEven = __builtin_shufflevector(x, y, 0, 2, 4, 6);     // x0 x2 y0 y2
-    const Float4 yzOdd = __builtin_shufflevector(y, z, 1, 3, 5, 7);      // y1 y3 z1 z3
-    const Float4 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
-    const Float4 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 4, 6);  // x0 y0 z0 x1
-    const Float4 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 5, 7);      // y1 z1 x2 y2
-    const Float4 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 5, 7);   // z2 x3 y3 z3
-    std::memcpy(out + 3 * k, &o0, 16), std::memcpy(out + 3 * k + 4, &o1, 16), std::memcpy(out + 3 * k + 8, &o2, 16);
+  if constexpr (Lanes == 8)
+    for (; k + 8 <= n; k += 8) interleave8(x + k, y + k, z + k, P + 3 * k), interleave8(nx + k, ny + k, nz + k, N + 3 * k);
+  for (; k + 4 <= n; k += 4) interleave4(x + k, y + k, z + k, P + 3 * k), interleave4(nx + k, ny + k, nz + k, N + 3 * k);
+  for (; k < n; ++k) {
+    P[3 * k] = static_cast<float>(x[k]), P[3 * k + 1] = static_cast<float>(y[k]), P[3 * k + 2] = static_cast<float>(z[k]);
+    N[3 * k] = static_cast<float>(nx[k]), N[3 * k + 1] = static_cast<float>(ny[k]), N[3 * k + 2] = static_cast<float>(nz[k]);
   }
-  for (; k < n; ++k)
-    out[3 * k] = static_cast<float>(a[k]), out[3 * k + 1] = static_cast<float>(b[k]), out[3 * k + 2] = static_cast<float>(c[k]);
 }
 
 // out[k] = a[k] as a float.
@@ -113,7 +147,7 @@ PDESURF_INLINE void toFloats(const double* __restrict a, float* __restrict out, 
 // chunk's flagged points are summed. Then floats, interleaved xyz.
 // Returns whether any point is flagged (a pole, out of range or, with curvature, degenerate
 // or with a curvature beyond ±3e38).
-template <bool Curvature>
+template <bool Curvature, int Lanes>
 PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict P, float* __restrict Nf, float* __restrict H, float* __restrict K) {
   alignas(64) double unitX[kChunk], unitY[kChunk], unitZ[kChunk], mean[Curvature ? kChunk : 1], gauss[Curvature ? kChunk : 1];
   // Local copies: GCC reloads a struct's pointer members inside the loop and gives up.
@@ -158,12 +192,12 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
       flagged += std::fabs(mean[k]) <= 3e38 && std::fabs(gauss[k]) <= 3e38 ? 0.0 : 1.0;
     }
   }
-  interleave3(x, y, z, P, len);
-  interleave3(unitX, unitY, unitZ, Nf, len);
+  interleaveBoth<Lanes>(x, y, z, unitX, unitY, unitZ, P, Nf, len);
   if constexpr (Curvature) toFloats(mean, H, len), toFloats(gauss, K, len);
   return flagged != 0;
 }
 
+template <int Lanes>
 PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
   const size_t m = row.count;
   f.poles = f.degenerate = 0;
@@ -172,8 +206,8 @@ PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFram
   for (size_t i0 = 0; i0 < m; i0 += kChunk) {
     const size_t len = std::min(m - i0, kChunk);
     const RowSlice s(row, i0, curvature);
-    const bool flagged = curvature ? frameChunk<true>(s, len, P + 3 * i0, N + 3 * i0, H + i0, K + i0)
-                                     : frameChunk<false>(s, len, P + 3 * i0, N + 3 * i0, nullptr, nullptr);
+    const bool flagged = curvature ? frameChunk<true, Lanes>(s, len, P + 3 * i0, N + 3 * i0, H + i0, K + i0)
+                                     : frameChunk<false, Lanes>(s, len, P + 3 * i0, N + 3 * i0, nullptr, nullptr);
     if (!flagged) continue;
     for (size_t k = 0; k < len; ++k) {  // rare: count and locate
       const unsigned p = pointFlags(s, k, curvature);
@@ -185,17 +219,16 @@ PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFram
   }
 }
 
-#ifdef PDESURF_AVX2_COPY
-PDESURF_AVX2 void frameRowAvx2(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy(row, P, N, f, H, K); }
+void frameRowBaseline(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<4>(row, P, N, f, H, K); }
+#ifdef PDESURF_VECTOR_COPIES
+PDESURF_AVX2 void frameRowAvx2(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
+PDESURF_AVX512 void frameRowAvx512(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
 #endif
 
 }  // namespace
 
 void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
-#ifdef PDESURF_AVX2_COPY
-  if (wideVectors()) return frameRowAvx2(row, P, N, f, H, K);
-#endif
-  frameRowCopy(row, P, N, f, H, K);
+  PDESURF_DISPATCH(frameRow, row, P, N, f, H, K);
 }
 
 }  // namespace pdesurf
