@@ -69,6 +69,29 @@ PDESURF_AVX512 void combinePieceAvx512(const Tabulation& t, int j, size_t i0, si
 
 }  // namespace
 
+int readableTerms(const Tabulation& t) {
+  int most = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (t.pointwiseProgram[c]) return 3;
+    most = std::max(most, t.terms[c]);
+  }
+  return t.depth == 2 ? std::min(most, 3) : 3;
+}
+
+void twoTerms(const Tabulation& t, int j, size_t i0, TwoTerms (&out)[3]) {
+  const size_t m = static_cast<size_t>(t.nu) + 1;
+  for (int c = 0; c < 3; ++c) {
+    const int T = t.terms[c];
+    const double* gv = t.vTab[c].data() + static_cast<size_t>(j) * 2 * T;  // g, g' per term
+    // No term: any finite array (the grid's u), scaled by 0.
+    const double* G1 = T > 0 ? t.uTab[c].data() + i0 : t.u.data() + i0;
+    const double* G1u = T > 0 ? G1 + m : G1;
+    const double* G2 = T > 1 ? G1 + 2 * m : G1;
+    const double* G2u = T > 1 ? G1 + 3 * m : G1u;
+    out[c] = {T, G1, G1u, G2, G2u, T > 0 ? gv[0] : 0.0, T > 0 ? gv[1] : 0.0, T > 1 ? gv[2] : 0.0, T > 1 ? gv[3] : 0.0};
+  }
+}
+
 void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row) {
   PDESURF_DISPATCH(combinePiece, t, j, i0, len, row);
 }

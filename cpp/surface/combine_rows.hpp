@@ -28,6 +28,23 @@ constexpr int kRowDerivative[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0
 // row.d[q][c][i] = Σ_t G_t^(a_q)(u_{i0+i}) g_t^(b_q)(v_j) for every quantity q and component c.
 void combineSeparablePiece(const Tabulation& t, int j, size_t i0, size_t len, GridRow& row);
 
+// One component of at most two terms over a piece, for reading without combining:
+//   X = G1·g1 + G2·g2,  X_u = G1u·g1 + G2u·g2,  X_v = G1·g1v + G2·g2v
+// (G1, G1u, G2, G2u from the piece's first point). One term: G2 = G1, G2u = G1u, g2 = g2v
+// = 0; none: every scale 0.
+struct TwoTerms {
+  int terms;  // 0, 1 or 2
+  const double *G1, *G1u, *G2, *G2u;
+  double g1, g1v, g2, g2v;
+};
+
+// The largest term count of t's components when t can be read as TwoTerms (depth 2, no
+// pointwise part, at most two terms each), else 3.
+int readableTerms(const Tabulation& t);
+
+// Row j's components from point i0 on as TwoTerms; readableTerms(t) ≤ 2 required.
+void twoTerms(const Tabulation& t, int j, size_t i0, TwoTerms (&out)[3]);
+
 // Calls emit(j, i0, row) for every row j = 0..nv in pieces of at most `piece` points,
 // i0 = 0, piece, 2·piece, …; row holds points i0 .. i0 + row.count − 1. A piece that fits in
 // L1 (tessellation uses 256 points) is combined and consumed while it is still there.

@@ -5,10 +5,7 @@
 #include <cstring>
 
 #include "common/vector_clones.hpp"
-
-#ifdef __wasm_simd128__
-#include <wasm_simd128.h>
-#endif
+#include "surface/float_output.hpp"
 
 namespace pdesurf {
 
@@ -58,87 +55,13 @@ float clampToFloat(float x) {
   return low > 3e38f ? 3e38f : low;
 }
 
-typedef float Float4 __attribute__((vector_size(16)));
-
-// Four doubles from p as floats. In wasm, LLVM 14 turns a vectorised double → float
-// conversion into extract, demote and store per lane; f32x4.demote_f64x2_zero is said outright.
-// Natively one 4-wide conversion (one vcvtpd2ps with AVX2): GCC turns two 2-wide ones into
-// two converts of zero-extended halves plus moves.
-PDESURF_INLINE Float4 toFloat4(const double* p) {
-#ifdef __wasm_simd128__
-  const v128_t low = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p)), high = wasm_f32x4_demote_f64x2_zero(wasm_v128_load(p + 2));
-  return reinterpret_cast<Float4>(wasm_i64x2_shuffle(low, high, 0, 2));
-#else
-  typedef double Double4 __attribute__((vector_size(32)));
-  Double4 v;
-  std::memcpy(&v, p, 32);
-  return __builtin_convertvector(v, Float4);
-#endif
-}
-
-// out[0..11] = (a[k], b[k], c[k]) as floats for k = 0..3, in six vector shuffles (neither GCC
-// nor clang vectorises a stride-3 store from separate arrays by itself). Generic vectors: SSE
-// natively, simd128 in wasm, scalar code without either.
-PDESURF_INLINE void interleave4(const double* a, const double* b, const double* c, float* out) {
-  const Float4 x = toFloat4(a), y = toFloat4(b), z = toFloat4(c);
-  // Each shuffle takes two lanes from either source: one shufps (SSE) or i8x16.shuffle
-  // that V8 lowers to one.
-  const Float4 xyEven = __builtin_shufflevector(x, y, 0, 2, 4, 6);     // x0 x2 y0 y2
-  const Float4 yzOdd = __builtin_shufflevector(y, z, 1, 3, 5, 7);      // y1 y3 z1 z3
-  const Float4 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 5, 7);  // z0 z2 x1 x3
-  const Float4 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 4, 6);  // x0 y0 z0 x1
-  const Float4 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 5, 7);      // y1 z1 x2 y2
-  const Float4 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 5, 7);   // z2 x3 y3 z3
-  std::memcpy(out, &o0, 16), std::memcpy(out + 4, &o1, 16), std::memcpy(out + 8, &o2, 16);
-}
-
-typedef float Float8 __attribute__((vector_size(32)));
-
-// The same for eight points with 256-bit vectors (the AVX2 and AVX-512 copies): shufps works
-// within each 128-bit half, so the six shuffles interleave points 0-3 and 4-7 at once, and
-// three cross-half permutes put the outputs in order.
-PDESURF_INLINE void interleave8(const double* a, const double* b, const double* c, float* out) {
-  typedef double Double8 __attribute__((vector_size(64)));
-  Double8 da, db, dc;
-  std::memcpy(&da, a, 64), std::memcpy(&db, b, 64), std::memcpy(&dc, c, 64);
-  const Float8 x = __builtin_convertvector(da, Float8), y = __builtin_convertvector(db, Float8), z = __builtin_convertvector(dc, Float8);
-  const Float8 xyEven = __builtin_shufflevector(x, y, 0, 2, 8, 10, 4, 6, 12, 14);
-  const Float8 yzOdd = __builtin_shufflevector(y, z, 1, 3, 9, 11, 5, 7, 13, 15);
-  const Float8 zEvenXOdd = __builtin_shufflevector(z, x, 0, 2, 9, 11, 4, 6, 13, 15);
-  const Float8 o0 = __builtin_shufflevector(xyEven, zEvenXOdd, 0, 2, 8, 10, 4, 6, 12, 14);
-  const Float8 o1 = __builtin_shufflevector(yzOdd, xyEven, 0, 2, 9, 11, 4, 6, 13, 15);
-  const Float8 o2 = __builtin_shufflevector(zEvenXOdd, yzOdd, 1, 3, 9, 11, 5, 7, 13, 15);
-  const Float8 w0 = __builtin_shufflevector(o0, o1, 0, 1, 2, 3, 8, 9, 10, 11);
-  const Float8 w1 = __builtin_shufflevector(o2, o0, 0, 1, 2, 3, 12, 13, 14, 15);
-  const Float8 w2 = __builtin_shufflevector(o1, o2, 4, 5, 6, 7, 12, 13, 14, 15);
-  std::memcpy(out, &w0, 32), std::memcpy(out + 8, &w1, 32), std::memcpy(out + 16, &w2, 32);
-}
-
-// P[3k..3k+2] = (x[k], y[k], z[k]) and N[3k..3k+2] = (nx[k], ny[k], nz[k]) as floats, the two
-// written side by side: two output streams advancing together take about half the time of
-// one written after the other in pieces (24 MB at 1024², measured on an EPYC VM).
-template <int Lanes>
-PDESURF_INLINE void interleaveBoth(const double* __restrict x, const double* __restrict y, const double* __restrict z,
-                                   const double* __restrict nx, const double* __restrict ny, const double* __restrict nz,
-                                   float* __restrict P, float* __restrict N, size_t n) {
-  size_t k = 0;
-  if constexpr (Lanes == 8)
-    for (; k + 8 <= n; k += 8) interleave8(x + k, y + k, z + k, P + 3 * k), interleave8(nx + k, ny + k, nz + k, N + 3 * k);
-  for (; k + 4 <= n; k += 4) interleave4(x + k, y + k, z + k, P + 3 * k), interleave4(nx + k, ny + k, nz + k, N + 3 * k);
-  for (; k < n; ++k) {
-    P[3 * k] = static_cast<float>(x[k]), P[3 * k + 1] = static_cast<float>(y[k]), P[3 * k + 2] = static_cast<float>(z[k]);
-    N[3 * k] = static_cast<float>(nx[k]), N[3 * k + 1] = static_cast<float>(ny[k]), N[3 * k + 2] = static_cast<float>(nz[k]);
-  }
-}
-
-// out[k] = a[k] as a float.
-PDESURF_INLINE void toFloats(const double* __restrict a, float* __restrict out, size_t n) {
-  size_t k = 0;
-  for (; k + 4 <= n; k += 4) {
-    const Float4 x = toFloat4(a + k);
-    std::memcpy(out + k, &x, 16);
-  }
-  for (; k < n; ++k) out[k] = static_cast<float>(a[k]);
+// X_u × X_v, |X_u × X_v|² = EG − F², E = |X_u|² and G = |X_v|² of one point.
+struct Cross {
+  double nx, ny, nz, det, E, G;
+};
+PDESURF_INLINE Cross crossOf(double xu, double yu, double zu, double xv, double yv, double zv) {
+  const double nx = yu * zv - zu * yv, ny = zu * xv - xu * zv, nz = xu * yv - yu * xv;
+  return {nx, ny, nz, nx * nx + ny * ny + nz * nz, xu * xu + yu * yu + zu * zu, xv * xv + yv * yv + zv * zv};
 }
 
 // One chunk in two passes. The first is arithmetic on doubles only, so it vectorises (the
@@ -161,11 +84,7 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
   double flagged = 0;
 #pragma omp simd reduction(+ : flagged)
   for (size_t k = 0; k < len; ++k) {
-    const double nx = yu[k] * zv[k] - zu[k] * yv[k], ny = zu[k] * xv[k] - xu[k] * zv[k],
-                 nz = xu[k] * yv[k] - yu[k] * xv[k];
-    const double det = nx * nx + ny * ny + nz * nz;  // |X_u × X_v|² = EG − F²
-    const double E = xu[k] * xu[k] + yu[k] * yu[k] + zu[k] * zu[k];
-    const double G = xv[k] * xv[k] + yv[k] * yv[k] + zv[k] * zv[k];
+    const auto [nx, ny, nz, det, E, G] = crossOf(xu[k], yu[k], zu[k], xv[k], yv[k], zv[k]);
     // E, G ≥ 0, so this also means det > 0; NaN fails it.
     const bool hasNormal = det > 1e-24 * E * G;
     // A superset of the out-of-range points (NaN or ∞ anywhere makes it NaN or ∞; a sum may
@@ -197,6 +116,67 @@ PDESURF_INLINE bool frameChunk(const RowSlice& s, size_t len, float* __restrict 
   return flagged != 0;
 }
 
+// frameChunk without curvature for points read as two-term components (TwoTerms): the row
+// arrays are neither written nor read again. The components are taken in a cyclic order
+// c[0], c[1], c[2] that puts the Twos components of two terms first (a cyclic permutation
+// commutes with the cross product), so four instantiations cover every mix of term counts
+// without multiplying by zero.
+template <int Twos, int Lanes>
+PDESURF_INLINE bool frameTwoTermsChunk(const TwoTerms (&s)[3], const int (&c)[3], size_t i0, size_t len, float* __restrict P, float* __restrict Nf) {
+  alignas(64) double position[3][kChunk], unit[3][kChunk];
+  // Local copies (see frameChunk); X and X_v read the same G.
+#define PDESURF_TERMS(r)                                                                                  \
+  const double *__restrict G1_##r = s[c[r]].G1 + i0, *__restrict G1u_##r = s[c[r]].G1u + i0;              \
+  const double *__restrict G2_##r = s[c[r]].G2 + i0, *__restrict G2u_##r = s[c[r]].G2u + i0;              \
+  const double g1_##r = s[c[r]].g1, g1v_##r = s[c[r]].g1v, g2_##r = s[c[r]].g2, g2v_##r = s[c[r]].g2v;  \
+  double *__restrict position##r = position[c[r]], *__restrict unit##r = unit[c[r]];
+  PDESURF_TERMS(0) PDESURF_TERMS(1) PDESURF_TERMS(2)
+#undef PDESURF_TERMS
+  double flagged = 0;
+#pragma omp simd reduction(+ : flagged)
+  for (size_t k = 0; k < len; ++k) {
+    // a, b, d: components c[0], c[1], c[2] of X, then of X_u and X_v.
+    double a = G1_0[k] * g1_0, b = G1_1[k] * g1_1, d = G1_2[k] * g1_2;
+    double au = G1u_0[k] * g1_0, bu = G1u_1[k] * g1_1, du = G1u_2[k] * g1_2;
+    double av = G1_0[k] * g1v_0, bv = G1_1[k] * g1v_1, dv = G1_2[k] * g1v_2;
+    if constexpr (Twos > 0) a += G2_0[k] * g2_0, au += G2u_0[k] * g2_0, av += G2_0[k] * g2v_0;
+    if constexpr (Twos > 1) b += G2_1[k] * g2_1, bu += G2u_1[k] * g2_1, bv += G2_1[k] * g2v_1;
+    if constexpr (Twos > 2) d += G2_2[k] * g2_2, du += G2u_2[k] * g2_2, dv += G2_2[k] * g2v_2;
+    const auto [na, nb, nd, det, E, G] = crossOf(au, bu, du, av, bv, dv);
+    const bool hasNormal = det > 1e-24 * E * G;
+    const double reach = std::fabs(a) + std::fabs(b) + std::fabs(d) + 0.0 * det;
+    flagged += (hasNormal ? 0.0 : 1.0) + (reach <= kFloatMax ? 0.0 : 1.0);
+    const double inv = 1.0 / std::sqrt(hasNormal ? det : 1.0);
+    position0[k] = a, position1[k] = b, position2[k] = d;
+    unit0[k] = na * inv, unit1[k] = nb * inv, unit2[k] = nd * inv;
+  }
+  if (flagged != 0) return true;
+  interleaveBoth<Lanes>(position[0], position[1], position[2], unit[0], unit[1], unit[2], P, Nf, len);
+  return false;
+}
+
+template <int Lanes>
+PDESURF_INLINE bool frameTwoTermsCopy(const TwoTerms (&s)[3], size_t len, float* P, float* N) {
+  const bool two[3] = {s[0].terms == 2, s[1].terms == 2, s[2].terms == 2};
+  const int twos = two[0] + two[1] + two[2];
+  // The cyclic order with the two-term components first: one of them first, or one of one
+  // term last.
+  int first = 0;
+  if (twos == 1) first = two[0] ? 0 : two[1] ? 1 : 2;
+  if (twos == 2) first = !two[0] ? 1 : !two[1] ? 2 : 0;
+  const int c[3] = {first, (first + 1) % 3, (first + 2) % 3};
+  for (size_t i0 = 0; i0 < len; i0 += kChunk) {
+    const size_t n = std::min(len - i0, kChunk);
+    float *p = P + 3 * i0, *q = N + 3 * i0;
+    const bool flagged = twos == 0   ? frameTwoTermsChunk<0, Lanes>(s, c, i0, n, p, q)
+                         : twos == 1 ? frameTwoTermsChunk<1, Lanes>(s, c, i0, n, p, q)
+                         : twos == 2 ? frameTwoTermsChunk<2, Lanes>(s, c, i0, n, p, q)
+                                     : frameTwoTermsChunk<3, Lanes>(s, c, i0, n, p, q);
+    if (flagged) return false;
+  }
+  return true;
+}
+
 template <int Lanes>
 PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
   const size_t m = row.count;
@@ -220,7 +200,10 @@ PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFram
 }
 
 void frameRowBaseline(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<4>(row, P, N, f, H, K); }
+bool frameTwoTermsBaseline(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<4>(s, len, P, N); }
 #ifdef PDESURF_VECTOR_COPIES
+PDESURF_AVX2 bool frameTwoTermsAvx2(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<8>(s, len, P, N); }
+PDESURF_AVX512 bool frameTwoTermsAvx512(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<8>(s, len, P, N); }
 PDESURF_AVX2 void frameRowAvx2(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
 PDESURF_AVX512 void frameRowAvx512(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
 #endif
@@ -229,6 +212,16 @@ PDESURF_AVX512 void frameRowAvx512(const GridRow& row, float* P, float* N, RowFr
 
 void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) {
   PDESURF_DISPATCH(frameRow, row, P, N, f, H, K);
+}
+
+bool frameTwoTerms(const TwoTerms (&s)[3], size_t len, float* P, float* N) {
+#ifdef PDESURF_VECTOR_COPIES
+  // Natively it pays with AVX-512's 32 vector registers only: GCC's SSE2 and AVX2 copies of
+  // this loop spill and run slower than combining (fig4a at 1024²: 5.8 against 4.5 ms, 3.0
+  // against 2.9 ms). In wasm (V8's allocation) it is faster.
+  if (vectorCopy() != VectorCopy::Avx512) return false;
+#endif
+  PDESURF_DISPATCH(frameTwoTerms, s, len, P, N);
 }
 
 }  // namespace pdesurf

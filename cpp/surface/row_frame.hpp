@@ -23,4 +23,11 @@ struct RowFrame {
 // holds.
 void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H = nullptr, float* K = nullptr);
 
+// frameRow without curvature for a piece of len points read as two-term components
+// (twoTerms), without combining the row: most blends.
+// Returns false, with P and N partly written, when a point is flagged or when this CPU's copy
+// frames faster from combined rows; the caller then combines the piece and calls frameRow,
+// which counts and locates.
+bool frameTwoTerms(const TwoTerms (&s)[3], size_t len, float* P, float* N);
+
 }  // namespace pdesurf

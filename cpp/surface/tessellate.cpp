@@ -109,7 +109,7 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
   std::vector<size_t> poles;
   const size_t w = static_cast<size_t>(nu) + 1;
   RowFrame frame;
-  combineRowPieces(t, kFramePiece, [&](int j, size_t i0, const GridRow& row) {
+  auto frameCombined = [&](int j, size_t i0, const GridRow& row) {
     const size_t first = static_cast<size_t>(j) * w + i0;
     float* q = nrm + 3 * first;
     if (curvature)
@@ -121,7 +121,28 @@ void tessellateInto(const SeparableSurface& s, int nu, int nv, Mesh& m, bool cur
     if (frame.poles > 0)  // rare: find the pole vertices of this piece again
       for (size_t i = 0; i < row.count; ++i)
         if (q[3 * i] == 0 && q[3 * i + 1] == 0 && q[3 * i + 2] == 0) poles.push_back(first + i);
-  });
+  };
+  const int terms = readableTerms(t);
+  if (curvature || terms > 2) {
+    combineRowPieces(t, kFramePiece, frameCombined);
+  } else {
+    // Components of at most two terms (most blends) are read straight from the tabulation; a
+    // piece with a pole or a point out of range is combined and framed as above.
+    GridRow row;
+    TwoTerms pieceTerms[3];
+    for (int j = 0; j <= nv; ++j)
+      for (size_t i0 = 0; i0 < w; i0 += kFramePiece) {
+        const size_t len = std::min(kFramePiece, w - i0), first = static_cast<size_t>(j) * w + i0;
+        twoTerms(t, j, i0, pieceTerms);
+        if (frameTwoTerms(pieceTerms, len, pos + 3 * first, nrm + 3 * first)) continue;
+        if (row.d[0][0].size() < len)
+          for (int q = 0; q < 3; ++q)
+            for (int c = 0; c < 3; ++c) row.d[q][c].resize(kFramePiece);
+        row.count = len;
+        combineSeparablePiece(t, j, i0, len, row);
+        frameCombined(j, i0, row);
+      }
+  }
   repairPoleNormals(poles, nu, nv, m);
 }
 
