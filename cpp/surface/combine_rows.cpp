@@ -51,8 +51,10 @@ PDESURF_INLINE void combinePiece(const Tabulation& t, int j, size_t i0, size_t l
     const int T = t.terms[c];
     std::array<double*, 6> out{};
     for (int q = 0; q < Q; ++q) out[q] = row.d[q][c].data();
-    if (T == 0)
+    if (T == 0) {  // (its tables are empty: no pointer into them)
       for (int q = 0; q < Q; ++q) std::fill(out[q], out[q] + len, 0.0);
+      continue;
+    }
     const double* gv = t.vTab[c].data() + static_cast<size_t>(j) * D * T;
     if (Q == 6)
       addAllTerms<6>(out, t.uTab[c].data() + i0, m, D, T, gv, len);
