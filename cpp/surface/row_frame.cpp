@@ -200,9 +200,7 @@ PDESURF_INLINE void frameRowCopy(const GridRow& row, float* P, float* N, RowFram
 }
 
 void frameRowBaseline(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<4>(row, P, N, f, H, K); }
-bool frameTwoTermsBaseline(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<4>(s, len, P, N); }
 #ifdef PDESURF_VECTOR_COPIES
-PDESURF_AVX2 bool frameTwoTermsAvx2(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<8>(s, len, P, N); }
 PDESURF_AVX512 bool frameTwoTermsAvx512(const TwoTerms (&s)[3], size_t len, float* P, float* N) { return frameTwoTermsCopy<8>(s, len, P, N); }
 PDESURF_AVX2 void frameRowAvx2(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
 PDESURF_AVX512 void frameRowAvx512(const GridRow& row, float* P, float* N, RowFrame& f, float* H, float* K) { frameRowCopy<8>(row, P, N, f, H, K); }
@@ -216,12 +214,13 @@ void frameRow(const GridRow& row, float* P, float* N, RowFrame& f, float* H, flo
 
 bool frameTwoTerms(const TwoTerms (&s)[3], size_t len, float* P, float* N) {
 #ifdef PDESURF_VECTOR_COPIES
-  // Natively it pays with AVX-512's 32 vector registers only: GCC's SSE2 and AVX2 copies of
+  // Natively one copy only, for AVX-512's 32 vector registers: GCC's SSE2 and AVX2 copies of
   // this loop spill and run slower than combining (fig4a at 1024²: 5.8 against 4.5 ms, 3.0
-  // against 2.9 ms). In wasm (V8's allocation) it is faster.
-  if (vectorCopy() != VectorCopy::Avx512) return false;
+  // against 2.9 ms). Elsewhere the plain version runs (in wasm it is faster than combining).
+  return vectorCopy() == VectorCopy::Avx512 && frameTwoTermsAvx512(s, len, P, N);
+#else
+  return frameTwoTermsCopy<4>(s, len, P, N);
 #endif
-  PDESURF_DISPATCH(frameTwoTerms, s, len, P, N);
 }
 
 }  // namespace pdesurf
