@@ -7,6 +7,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { loadSolver, PdesurfError } from '../../web/solver/pdesurf-solver.js';
+import { hasWasmSimd } from '../../web/solver/wasm-features.js';
 
 // A factory with the real module's shape: solveScene(text, nu, nv) -> {ok, ...}.
 const STUB = `
@@ -105,3 +106,60 @@ describe('solver wrapper: a compiled module', () => {
       (e) => e instanceof PdesurfError && e.code === 'Load');
   });
 });
+
+// The module needs WebAssembly SIMD; every supported browser has it, and one without it is
+// told so by name (node cannot turn SIMD off, so an engine without it is a stand-in whose
+// validate refuses every module).
+describe('solver wrapper: an engine without WebAssembly SIMD', () => {
+  const build = process.env.PDESURF_BUILD_DIR || path.join(path.dirname(new URL(import.meta.url).pathname), '..', '..', 'build');
+  const wasmDir = path.resolve(build, 'wasm');
+  const moduleUrl = pathToFileURL(path.join(wasmDir, 'pdesurf.js')).href;
+
+  it('node has it, and the module built uses it', () => {
+    assert.equal(hasWasmSimd(), true);
+    const code = codeSection(fs.readFileSync(path.join(wasmDir, 'pdesurf.wasm')));
+    // f32x4.demote_f64x2_zero (0xfd 0x5e): the frame pass converts four values with two of them
+    let demotes = 0;
+    for (let i = code.indexOf(0xfd); i >= 0; i = code.indexOf(0xfd, i + 1)) if (code[i + 1] === 0x5e) demotes++;
+    assert.ok(demotes >= 8, `${demotes} f32x4.demote_f64x2_zero in pdesurf.wasm's code`);
+  });
+
+  it('is refused up front with Unsupported, naming what is missing, and no rejection is left unhandled', async () => {
+    const validate = WebAssembly.validate;
+    const unhandled = [];
+    const onUnhandled = (reason) => unhandled.push(reason);
+    process.on('unhandledRejection', onUnhandled);
+    WebAssembly.validate = () => false;
+    try {
+      assert.equal(hasWasmSimd(), false);
+      const compile = Promise.reject(new Error('CompileError: invalid opcode 0xfd'));
+      await assert.rejects(loadSolver({ moduleUrl, wasmModule: compile }),
+        (e) => e instanceof PdesurfError && e.code === 'Unsupported' && /lacks WebAssembly SIMD/.test(e.message) && /Safari 16\.4/.test(e.message));
+      await new Promise((resolve) => setTimeout(resolve, 20));
+      assert.deepEqual(unhandled, []);
+    } finally {
+      WebAssembly.validate = validate;
+      process.off('unhandledRejection', onUnhandled);
+    }
+    assert.equal(hasWasmSimd(), true);
+    assert.equal(hasWasmSimd(null), false);
+    assert.equal(hasWasmSimd({ validate: () => { throw new Error('no'); } }), false);
+  });
+});
+
+// The bytes of a module's code section (id 10): sections are an id and a LEB128 size.
+function codeSection(bytes) {
+  let at = 8;
+  while (at < bytes.length) {
+    const id = bytes[at++];
+    let size = 0;
+    for (let shift = 0; ; shift += 7) {
+      const b = bytes[at++];
+      size += (b & 0x7f) * 2 ** shift;
+      if (b < 0x80) break;
+    }
+    if (id === 10) return bytes.subarray(at, at + size);
+    at += size;
+  }
+  throw new Error('no code section');
+}

@@ -2,6 +2,7 @@
 // touches the module: it turns the module's result-or-error value into data or a
 // thrown PdesurfError, so callers never see an aborted module or a bare pointer.
 import { normaliseReport } from '../state/join-report.js';
+import { hasWasmSimd, SIMD_MISSING } from './wasm-features.js';
 
 /** A solver failure with a machine-readable code (ParseError, InvalidField, ...). */
 export class PdesurfError extends Error {
@@ -21,9 +22,15 @@ const DEFAULT_MODULE_URL = '/wasm/pdesurf.js';
  * wasmBinary may be a promise: the worker starts fetching the .wasm while this imports the
  * module's glue code. Or wasmModule, a WebAssembly.Module or a promise of one (the worker's
  * WebAssembly.compileStreaming: compiled as it downloads).
+ * An engine without WebAssembly SIMD, which the module needs, fails with code Unsupported.
  */
 export async function loadSolver(opts = {}) {
   const moduleUrl = opts.moduleUrl || DEFAULT_MODULE_URL;
+  if (!hasWasmSimd()) {
+    // the caller's fetch or compile, started in parallel, fails too: not an unhandled rejection
+    for (const pending of [opts.wasmBinary, opts.wasmModule]) Promise.resolve(pending).catch(() => {});
+    throw new PdesurfError('Unsupported', SIMD_MISSING);
+  }
   let factory, wasmBinary, wasmModule;
   try {
     [{ default: factory }, wasmBinary, wasmModule] = await Promise.all([import(/* @vite-ignore */ moduleUrl), opts.wasmBinary, opts.wasmModule]);
