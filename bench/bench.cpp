@@ -22,6 +22,7 @@
 #include "ode/basis_cache.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
+#include "../cli/retain_freed_memory.hpp"
 
 using namespace pdesurf;
 using Clock = std::chrono::steady_clock;
@@ -93,6 +94,7 @@ void benchCad(const std::string& dir);     // bench/cad_bench.cpp
 }  // namespace pdesurf
 
 int main() {
+  platform::retainFreedMemory();  // as the CLI does: native rows measure the solver, not page faults
 #ifdef __EMSCRIPTEN__
   const char* target = "wasm (node)";
 #else

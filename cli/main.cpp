@@ -2,8 +2,10 @@
 
 #include "cli.hpp"
 #include "common/errors.hpp"
+#include "retain_freed_memory.hpp"
 
 int main(int argc, char** argv) {
+  pdesurf::platform::retainFreedMemory();
   using namespace pdesurf::cli;
   Options o;
   try {
