@@ -6,21 +6,14 @@
 #include <vector>
 
 #include "../../cli/retain_freed_memory.hpp"
+#include "test_util.hpp"
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PDESURF_TEST_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define PDESURF_TEST_ASAN 1
-#endif
-
-// glibc's own allocator only: ASan replaces it (and ignores mallopt), wasm has no glibc.
-#if defined(__GLIBC__) && !defined(PDESURF_TEST_ASAN)
+// glibc's own allocator only: wasm has no glibc, and ASan replaces it (and ignores mallopt).
+#if defined(__GLIBC__)
 #include <malloc.h>
 
-TEST_CASE("freed blocks stay in the process for the next allocation") {
+TEST_CASE("freed blocks stay in the process for the next allocation" *
+          doctest::skip(pdesurf::testing::kAddressSanitizer)) {
   pdesurf::platform::retainFreedMemory();
   constexpr size_t kMiB = size_t(1) << 20;
   const auto before = mallinfo2();
