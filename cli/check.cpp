@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
 #include "methods/measures.hpp"
@@ -24,7 +25,27 @@ std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
   return out;
 }
 
-nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res) {
+// Creases inside every patch (analysis/interior_creases.hpp). A fill's are part of the
+// verdict: it is built to be smooth inside. Another patch's are reported: a typed surface
+// or a blend of kinked data may have the creases its model declares.
+struct PatchCreases {
+  InteriorCreases c;
+  bool judged = false;
+};
+
+std::vector<PatchCreases> creases(const std::vector<SolvedPatch>& solved) {
+  std::vector<PatchCreases> out;
+  for (const SolvedPatch& s : solved) out.push_back({measureCreases(s.patch->name, s.surface), s.patch->fill.given});
+  return out;
+}
+
+bool creasesOk(const std::vector<PatchCreases>& all) {
+  for (const PatchCreases& p : all)
+    if (p.judged && !p.c.ok) return false;
+  return true;
+}
+
+nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<PatchCreases>& cr, bool ok) {
   using nlohmann::json;
   json joins = json::array(), crossings = json::array();
   for (const JoinResult& j : r.joins)
@@ -42,7 +63,12 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
   for (const FillCentre& c : r.centres)
     centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"normal_spread_outer_deg", c.normalSpreadOuterDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
                        {"curvature_ratio", c.curvatureRatio}, {"ok", c.ok}});
-  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"centres", centres}, {"crossings", crossings}, {"interior", interior}};
+  json creases = json::array();
+  for (const PatchCreases& p : cr)
+    creases.push_back({{"patch", p.c.patch}, {"coarse_deg", p.c.coarseDeg}, {"fine_deg", p.c.fineDeg}, {"crease_deg", p.c.creaseDeg},
+                       {"worst_u", p.c.u}, {"worst_v", p.c.v}, {"judged", p.judged}, {"ok", p.c.ok}});
+  return {{"ok", ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
+          {"creases", creases}};
 }
 
 }  // namespace
@@ -54,9 +80,11 @@ int runCheck(const Options& o, std::ostream& out) {
   const auto solved = solveScene(scene);
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
+  const std::vector<PatchCreases> cr = creases(solved);
+  const bool ok = r.ok && creasesOk(cr);
   if (o.json) {
-    out << toJson(r, res).dump(2) << "\n";
-    return r.ok ? 0 : 1;
+    out << toJson(r, res, cr, ok).dump(2) << "\n";
+    return ok ? 0 : 1;
   }
   char line[512];
   for (const JoinResult& j : r.joins) {
@@ -77,17 +105,23 @@ int runCheck(const Options& o, std::ostream& out) {
                   p.method.c_str(), p.r.absolute, p.r.relative, p.r.u, p.r.v);
     out << line;
   }
+  for (const PatchCreases& p : cr) {
+    std::snprintf(line, sizeof line, "creases %s: normal turn %.3g deg (h) %.3g deg (h/2): crease %.2e deg at (u, v) = (%.3g, %.3g)  %s\n",
+                  p.c.patch.c_str(), p.c.coarseDeg, p.c.fineDeg, p.c.creaseDeg, p.c.u, p.c.v,
+                  !p.judged ? (p.c.ok ? "smooth" : "creased") : p.c.ok ? "ok" : "FAILS");
+    out << line;
+  }
   for (const Crossing& c : r.crossings) {
     std::snprintf(line, sizeof line, "crossing %s x %s: u %.4g..%.4g, v %.4g..%.4g (%d triangle pairs)\n", c.patch.c_str(), c.other.c_str(),
                   c.u[0], c.u[1], c.v[0], c.v[1], c.triangles);
     out << line;
   }
   if (r.centres.empty())
-    std::snprintf(line, sizeof line, "%zu joins, %zu crossings: %s\n", r.joins.size(), r.crossings.size(), r.ok ? "ok" : "FAILS");
+    std::snprintf(line, sizeof line, "%zu joins, %zu crossings: %s\n", r.joins.size(), r.crossings.size(), ok ? "ok" : "FAILS");
   else
-    std::snprintf(line, sizeof line, "%zu joins, %zu centres, %zu crossings: %s\n", r.joins.size(), r.centres.size(), r.crossings.size(), r.ok ? "ok" : "FAILS");
+    std::snprintf(line, sizeof line, "%zu joins, %zu centres, %zu crossings: %s\n", r.joins.size(), r.centres.size(), r.crossings.size(), ok ? "ok" : "FAILS");
   out << line;
-  return r.ok ? 0 : 1;
+  return ok ? 0 : 1;
 }
 
 }  // namespace pdesurf::cli

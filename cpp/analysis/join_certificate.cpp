@@ -83,6 +83,56 @@ std::vector<double> sampleParameters(double a0, double a1, int count, bool open)
   return at;
 }
 
+// Compares the two sides of a join point by point (B the patch that promises, P what it meets,
+// at the same points; the met edge's parameter runs p0..p1): the gap, the tangent-plane angle,
+// the normal-curvature mismatch across (level 2), folds; r->level set, the figures filled in.
+// Returns how many points measured the promised figure.
+int compareEdges(const std::vector<EdgePoint>& B, const std::vector<EdgePoint>& P, double p0, double p1, double size, JoinResult* out) {
+  JoinResult& r = *out;
+  const int samples = static_cast<int>(B.size());
+  const double floor = 1e-9 * size;
+  int measured = 0;
+  double worstFigure = -1.0;
+  for (int k = 0; k < samples; ++k) {
+    const double v = p0 + (p1 - p0) * k / (samples - 1);
+    const double gap = (B[k].X - P[k].X).norm() / size;
+    r.g0 = std::max(r.g0, gap);
+    double figure = gap;
+    const Side b = sideAt(B[k], floor), p = sideAt(P[k], floor);
+    if (b.regular && p.regular) {
+      // Both leave the shared edge: on opposite sides of it, or the join folds.
+      if (b.inward.dot(p.inward) > 0) r.fold = true;
+      const double deg = std::atan2(b.n.cross(p.n).norm(), std::abs(b.n.dot(p.n))) * 180.0 / M_PI;
+      r.g1Deg = std::max(r.g1Deg, deg);
+      if (r.level >= 1) figure = deg;
+      if (r.level == 2) {
+        if (b.firstOrder && p.firstOrder) {
+          const Eigen::Vector3d across = b.n.cross(B[k].s).normalized();
+          const Eigen::Vector3d np = p.n.dot(b.n) < 0 ? Eigen::Vector3d(-p.n) : p.n;
+          const double kb = normalCurvature(B[k], b.n, across), kp = normalCurvature(P[k], np, across);
+          const double rel = std::abs(kb - kp) / std::max({std::abs(kb), std::abs(kp), 1.0 / size});
+          r.g2Rel = std::max(r.g2Rel, rel);
+          figure = rel;
+          ++measured;
+        } else {
+          ++r.degenerate;
+        }
+      } else {
+        ++measured;
+      }
+    } else {
+      ++r.degenerate;
+      if (r.level == 0) ++measured;
+    }
+    if (figure > worstFigure) worstFigure = figure, r.worstV = v;
+  }
+  return measured;
+}
+
+bool keepsPromise(const JoinResult& r, int measured) {
+  return r.g0 <= kG0Tolerance && !r.fold && measured > 0 && (r.level < 1 || r.g1Deg <= kG1ToleranceDeg) && (r.level < 2 || r.g2Rel <= kG2Tolerance);
+}
+
 JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size,
                       const EdgeReader& read) {
   const SeparableSurface& ts = target.surface;
@@ -120,49 +170,49 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   }
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
-  const double floor = 1e-9 * size;
-  int measured = 0;
-  double worstFigure = -1.0;
-  for (int k = 0; k < kJoinSamples; ++k) {
-    const double v = p0 + (p1 - p0) * k / (kJoinSamples - 1);
-    const double gap = (B[k].X - P[k].X).norm() / size;
-    r.g0 = std::max(r.g0, gap);
-    double figure = gap;
-    const Side b = sideAt(B[k], floor), p = sideAt(P[k], floor);
-    if (b.regular && p.regular) {
-      // Both leave the shared edge: on opposite sides of it, or the join folds.
-      if (b.inward.dot(p.inward) > 0) r.fold = true;
-      const double deg = std::atan2(b.n.cross(p.n).norm(), std::abs(b.n.dot(p.n))) * 180.0 / M_PI;
-      r.g1Deg = std::max(r.g1Deg, deg);
-      if (r.level >= 1) figure = deg;
-      if (r.level == 2) {
-        if (b.firstOrder && p.firstOrder) {
-          const Eigen::Vector3d across = b.n.cross(B[k].s).normalized();
-          const Eigen::Vector3d np = p.n.dot(b.n) < 0 ? Eigen::Vector3d(-p.n) : p.n;
-          const double kb = normalCurvature(B[k], b.n, across), kp = normalCurvature(P[k], np, across);
-          const double rel = std::abs(kb - kp) / std::max({std::abs(kb), std::abs(kp), 1.0 / size});
-          r.g2Rel = std::max(r.g2Rel, rel);
-          figure = rel;
-          ++measured;
-        } else {
-          ++r.degenerate;
-        }
-      } else {
-        ++measured;
-      }
-    } else {
-      ++r.degenerate;
-      if (r.level == 0) ++measured;
-    }
-    if (figure > worstFigure) worstFigure = figure, r.worstV = v;
-  }
+  const int measured = compareEdges(B, P, p0, p1, size, &r);
   // Far beyond rounding: the primary's edge is not this border at all; a scene error.
   if (r.g0 > 1e-3)
     throw Error(ErrorCode::InvalidField, (m.curve ? "the " : "edge ") + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
                                              "': they are " + std::to_string(r.g0 * size) + " apart at v = " + std::to_string(r.worstV));
-  r.ok = r.g0 <= kG0Tolerance && !r.fold && measured > 0 && (r.level < 1 || r.g1Deg <= kG1ToleranceDeg) &&
-         (r.level < 2 || r.g2Rel <= kG2Tolerance);
+  r.ok = keepsPromise(r, measured);
   return r;
+}
+
+// A pde patch's v closes on itself when both its u-edges do (a loop at u = 0 and at u = 1:
+// a tube, a vase, a fill): then v = v0 and v = v1 are one curve, a join of the patch with
+// itself. Corners this far apart (of the scene's size) are an open patch, not a torn one.
+constexpr double kClosedCorners = 1e-6;
+
+bool closesInV(const SeparableSurface& s, double size) {
+  for (double u : {s.u0, s.u1})
+    if (!((evalPoint(s, u, s.v0) - evalPoint(s, u, s.v1)).norm() <= kClosedCorners * size)) return false;
+  return true;
+}
+
+// Whether the patch's own u-edges (its data) run smoothly through the seam: the same tangent
+// direction at v0 and v1 (or none: a pole). A blend of a lens section is sharp at its seam by
+// declaration; it is judged there as a G0 edge (an acute edge's sides leave the same way: not
+// a fold).
+bool dataSmoothAcrossSeam(const SeparableSurface& s) {
+  for (double u : {s.u0, s.u1}) {
+    const Eigen::Vector3d a = evalPoint(s, u, s.v0, 0, 1), b = evalPoint(s, u, s.v1, 0, 1);
+    const double scale = std::max(a.norm(), b.norm());
+    if (scale == 0) continue;
+    if (!(a.cross(b).norm() <= 1e-8 * scale * scale && a.dot(b) > 0)) return false;
+  }
+  return true;
+}
+
+// What a closed patch promises across its own seam: at least G1 (a smooth surface has no
+// seam), G2 where its operator or its fill asks for curvature; G0 where its data are sharp
+// there (not a fill: a fill is built smooth inside whatever its loop's corners).
+int seamLevel(const Patch& p, const SeparableSurface& s) {
+  if (p.fill.given) return std::max(1, static_cast<int>(p.fill.continuity));
+  if (!dataSmoothAcrossSeam(s)) return 0;
+  int order = 6;
+  for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
+  return std::max(1, order / 2 - 1);
 }
 
 const SolvedPatch& solvedOf(const std::vector<SolvedPatch>& solved, const std::string& name) {
@@ -204,10 +254,32 @@ std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<Solve
   return out;
 }
 
+std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double size) {
+  std::vector<JoinResult> out;
+  for (const SolvedPatch& sp : solved) {
+    const SeparableSurface& s = sp.surface;
+    if (sp.patch->kind != PatchKind::Pde || !closesInV(s, size)) continue;
+    JoinResult r;
+    r.patch = r.surface = sp.patch->name;
+    r.end = "v1", r.edge = "v0";
+    r.level = seamLevel(*sp.patch, s);
+    if (r.level == 0) r.edge = "v0 (sharp in its data)";
+    // v = v1 (its inward derivative -X_v) against v = v0 (+X_v), point by point along u, on the
+    // open interval: the ends u0, u1 are the loops' own points (a fill's corner, its centre).
+    const auto B = openEdgeSamples(s, true, 1, s.u0, s.u1, kJoinSamples), P = openEdgeSamples(s, true, 0, s.u0, s.u1, kJoinSamples);
+    const int measured = compareEdges(B, P, s.u0, s.u1, size, &r);
+    if (r.level == 0) r.fold = false;
+    r.ok = keepsPromise(r, measured);
+    out.push_back(r);
+  }
+  return out;
+}
+
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid) {
   SceneReport r;
   r.sceneSize = sceneSizeOf(solved);
   r.joins = certifyJoins(scene, solved, r.sceneSize);
+  for (JoinResult& seam : certifySeams(solved, r.sceneSize)) r.joins.push_back(std::move(seam));
   for (const SolvedPatch& sp : solved)
     if (sp.patch->fill.given) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
   if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);

@@ -54,8 +54,12 @@ using EdgeReader = std::function<std::vector<EdgePoint>(const SolvedPatch& patch
 // are the solved surfaces' tolerances; another reader's caller judges its own.
 std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize,
                                      const EdgeReader& read = nullptr);
+// Every pde patch whose v closes on itself (both u-edges are loops) joined to itself along
+// v = v0 and v = v1: patch = surface = its name, end "v1", edge "v0", worstV the u where the
+// figure is worst. At least G1, G2 where the patch promises curvature.
+std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double sceneSize);
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
-// Joins, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
+// Joins and seams, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);
 
 }  // namespace pdesurf

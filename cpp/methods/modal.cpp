@@ -43,10 +43,12 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
     try {
       for (auto* side : {&c.left, &c.right})
         for (VExpansion& slot : *side) {
-          const VExpansion gen = generalPart(slot);
+          // A loop's data are periodic as a whole, not term by term (a side's family terms, a
+          // power of v, do not close): the whole slot is expanded.
+          const VExpansion gen = p.periodicV && !generalPart(slot).empty() ? slot : generalPart(slot);
           if (gen.empty()) continue;
-          slot = familyPart(slot);
-          const VExpansion approx = isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
+          slot = p.periodicV ? VExpansion{} : familyPart(slot);
+          const VExpansion approx = p.periodicV || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
                                     : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)
                                                                 : endMatchedFourier(gen, p.v0, p.v1, N, m);
           slot.insert(slot.end(), approx.begin(), approx.end());
@@ -81,6 +83,7 @@ double change(const SeparableSurface& a, const SeparableSurface& b) {
 }
 
 bool allPeriodic(const PdeProblem& p) {
+  if (p.periodicV) return true;
   for (const auto& c : p.component)
     for (const GeneralForce& f : c.generalForce)
       for (double u : {0.0, 0.5, 1.0}) {

@@ -41,6 +41,10 @@ struct ComponentProblem {
 
 struct PdeProblem {
   double v0 = 0.0, v1 = 0.0;
+  // v closes on itself: the data are one loop (a fill's), periodic even where they have a
+  // corner at v0, so an approximate method expands them in Fourier modes (the surface then
+  // closes to rounding) rather than as open data (whose interior need not close).
+  bool periodicV = false;
   std::array<ComponentProblem, 3> component;  // x, y, z
 };
 

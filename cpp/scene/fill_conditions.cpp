@@ -97,6 +97,7 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   const FillLoop& loop = fill.fill;
   const bool tangency = loop.continuity == Continuity::Tangency;
   const size_t n = loop.borders.size();
+  out.periodicV = true;  // one loop: the fill closes on itself across v = 0 (corner or not)
   std::vector<Side> sides;
   for (size_t k = 0; k < n; ++k) sides.push_back(sideOf(fill, k, solved, tangency));
 

@@ -107,7 +107,7 @@ struct Meets {
 
 // How much a fill's sides slow down at the loop's corners: their speed there is 1 - kFillEase
 // of the mean (scene/fill_conditions.cpp).
-constexpr double kFillEase = 0.5;
+constexpr double kFillEase = 1.0;
 
 // Version 4: one border of a fill's loop, or the edge a chained end continues: an edge of
 // another patch (a surface's t0/t1, a pde patch's u0/u1, a Bézier border), optionally a part

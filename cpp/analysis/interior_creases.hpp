@@ -1,0 +1,27 @@
+// Creases inside a patch, judged from outside as zebra shows them (docs/analysis.md): a(h), the
+// largest angle between the unit normals of neighbouring samples (along u and along v) of a
+// grid of step h over u in [u0 + 5 %, u1 - 5 %] and the whole v-range. On a smooth surface
+// a(h) ≈ κ h, so a(h/2) ≈ a(h)/2; a crease of angle θ keeps a(h) ≥ θ at every h, so
+// 2 a(h/2) - a(h) ≈ θ. The 5 % margins leave out the patch's own borders (a fill's corners,
+// a pole), where the parametrisation, not the surface, turns fast.
+#pragma once
+#include <string>
+
+#include "surface/separable_surface.hpp"
+
+namespace pdesurf {
+
+struct InteriorCreases {
+  std::string patch;
+  double coarseDeg = 0.0, fineDeg = 0.0;  // a(h) on n × n and a(h/2) on 2n × 2n
+  double creaseDeg = 0.0;                 // max(0, 2 a(h/2) - a(h))
+  double u = 0.0, v = 0.0;                // where the fine grid's largest angle is
+  bool ok = false;                        // creaseDeg <= kCreaseToleranceDeg
+};
+
+constexpr double kCreaseToleranceDeg = 0.01;
+constexpr int kCreaseGrid = 128;
+
+InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n = kCreaseGrid);
+
+}  // namespace pdesurf
