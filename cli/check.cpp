@@ -1,5 +1,6 @@
 // pdesurf check: the join certificate and crossing test of a scene (docs/analysis.md).
 #include <cstdio>
+#include <string>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -25,29 +26,22 @@ std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
   return out;
 }
 
-// Creases inside every patch (analysis/interior_creases.hpp). A fill's are part of the
-// verdict: it is built to be smooth inside. Another patch's are reported: a typed surface
-// or a blend of kinked data may have the creases its model declares.
-struct PatchCreases {
-  InteriorCreases c;
-  bool judged = false;
-};
-
-std::vector<PatchCreases> creases(const std::vector<SolvedPatch>& solved) {
-  std::vector<PatchCreases> out;
-  for (const SolvedPatch& s : solved) out.push_back({measureCreases(s.patch->name, s.surface), s.patch->fill.given});
+// Creases inside every patch (analysis/interior_creases.hpp), reported beside the verdict,
+// not in it: a typed surface or a blend of kinked data has the creases its model declares, and
+// a fill's corners still turn its normal fast nearby (docs/chains-and-fills.md, Limits).
+std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved) {
+  std::vector<InteriorCreases> out;
+  for (const SolvedPatch& s : solved) out.push_back(measureCreases(s.patch->name, s.surface));
   return out;
 }
 
-bool creasesOk(const std::vector<PatchCreases>& all) {
-  for (const PatchCreases& p : all)
-    if (p.judged && !p.c.ok) return false;
-  return true;
-}
-
-nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<PatchCreases>& cr, bool ok) {
+nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr, bool ok) {
   using nlohmann::json;
-  json joins = json::array(), crossings = json::array();
+  json joins = json::array(), seams = json::array(), crossings = json::array();
+  for (const JoinResult& j : r.seams)
+    seams.push_back({{"patch", j.patch}, {"level", levelName(j.level)}, {"sharp_in_data", j.level == 0}, {"g0", j.g0}, {"g1_deg", j.g1Deg},
+                     {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold}, {"degenerate", j.degenerate}, {"worst_u", j.worstV},
+                     {"ok", j.ok}});
   for (const JoinResult& j : r.joins)
     joins.push_back({{"patch", j.patch}, {"end", j.end}, {"surface", j.surface}, {"edge", j.edge}, {"level", levelName(j.level)},
                      {"g0", j.g0}, {"g1_deg", j.g1Deg}, {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold},
@@ -64,10 +58,10 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
     centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"normal_spread_outer_deg", c.normalSpreadOuterDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
                        {"curvature_ratio", c.curvatureRatio}, {"ok", c.ok}});
   json creases = json::array();
-  for (const PatchCreases& p : cr)
-    creases.push_back({{"patch", p.c.patch}, {"coarse_deg", p.c.coarseDeg}, {"fine_deg", p.c.fineDeg}, {"crease_deg", p.c.creaseDeg},
-                       {"worst_u", p.c.u}, {"worst_v", p.c.v}, {"judged", p.judged}, {"ok", p.c.ok}});
-  return {{"ok", ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
+  for (const InteriorCreases& c : cr)
+    creases.push_back({{"patch", c.patch}, {"coarse_deg", c.coarseDeg}, {"fine_deg", c.fineDeg}, {"crease_deg", c.creaseDeg}, {"worst_u", c.u},
+                       {"worst_v", c.v}, {"smooth", c.ok}});
+  return {{"ok", ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"seams", seams}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
           {"creases", creases}};
 }
 
@@ -80,8 +74,8 @@ int runCheck(const Options& o, std::ostream& out) {
   const auto solved = solveScene(scene);
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
-  const std::vector<PatchCreases> cr = creases(solved);
-  const bool ok = r.ok && creasesOk(cr);
+  const std::vector<InteriorCreases> cr = creases(solved);
+  const bool ok = r.ok;
   if (o.json) {
     out << toJson(r, res, cr, ok).dump(2) << "\n";
     return ok ? 0 : 1;
@@ -95,6 +89,14 @@ int runCheck(const Options& o, std::ostream& out) {
                   j.fold ? "YES" : "no", j.degenerate, j.ok ? "ok" : "FAILS");
     out << line;
   }
+  for (const JoinResult& j : r.seams) {
+    char g2[32] = "-";
+    if (j.level == 2) std::snprintf(g2, sizeof g2, "%.2e", j.g2Rel);
+    std::snprintf(line, sizeof line, "seam %s: v1 - v0%s  promise %s  G0 %.2e  G1 %.2e deg  G2 %s  fold %s  degenerate %d  %s\n", j.patch.c_str(),
+                  j.level == 0 ? " (sharp in its data)" : "", levelName(j.level), j.g0, j.g1Deg, g2, j.fold ? "YES" : "no", j.degenerate,
+                  j.ok ? "ok" : "FAILS");
+    out << line;
+  }
   for (const FillCentre& c : r.centres) {
     std::snprintf(line, sizeof line, "centre %s: normal spread %.2e deg (%.2e deg 2^-6 out)  fold %s  curvature %.3g (ratio %.2f to the outer rings)  %s\n", c.patch.c_str(),
                   c.normalSpreadDeg, c.normalSpreadOuterDeg, c.fold ? "YES" : "no", c.curvatureNear, c.curvatureRatio, c.ok ? "ok" : "FAILS");
@@ -105,10 +107,9 @@ int runCheck(const Options& o, std::ostream& out) {
                   p.method.c_str(), p.r.absolute, p.r.relative, p.r.u, p.r.v);
     out << line;
   }
-  for (const PatchCreases& p : cr) {
+  for (const InteriorCreases& c : cr) {
     std::snprintf(line, sizeof line, "creases %s: normal turn %.3g deg (h) %.3g deg (h/2): crease %.2e deg at (u, v) = (%.3g, %.3g)  %s\n",
-                  p.c.patch.c_str(), p.c.coarseDeg, p.c.fineDeg, p.c.creaseDeg, p.c.u, p.c.v,
-                  !p.judged ? (p.c.ok ? "smooth" : "creased") : p.c.ok ? "ok" : "FAILS");
+                  c.patch.c_str(), c.coarseDeg, c.fineDeg, c.creaseDeg, c.u, c.v, c.ok ? "smooth" : "creased");
     out << line;
   }
   for (const Crossing& c : r.crossings) {
@@ -116,11 +117,11 @@ int runCheck(const Options& o, std::ostream& out) {
                   c.u[0], c.u[1], c.v[0], c.v[1], c.triangles);
     out << line;
   }
-  if (r.centres.empty())
-    std::snprintf(line, sizeof line, "%zu joins, %zu crossings: %s\n", r.joins.size(), r.crossings.size(), ok ? "ok" : "FAILS");
-  else
-    std::snprintf(line, sizeof line, "%zu joins, %zu centres, %zu crossings: %s\n", r.joins.size(), r.centres.size(), r.crossings.size(), ok ? "ok" : "FAILS");
-  out << line;
+  std::string summary = std::to_string(r.joins.size()) + " joins, ";
+  if (!r.seams.empty()) summary += std::to_string(r.seams.size()) + (r.seams.size() == 1 ? " seam, " : " seams, ");
+  if (!r.centres.empty()) summary += std::to_string(r.centres.size()) + " centres, ";
+  summary += std::to_string(r.crossings.size()) + " crossings: " + (ok ? "ok" : "FAILS") + "\n";
+  out << summary;
   return ok ? 0 : 1;
 }
 

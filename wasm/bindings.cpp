@@ -116,8 +116,7 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
     const SceneReport r = checkScene(scene, solved, crossings ? 48 : 0);
     report.set("ok", r.ok);
     report.set("sceneSize", r.sceneSize);
-    val joins = val::array();
-    for (const JoinResult& j : r.joins) {
+    const auto joinObject = [](const JoinResult& j) {
       val o = val::object();
       o.set("patch", j.patch);
       o.set("end", j.end);
@@ -131,8 +130,13 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
       o.set("degenerate", j.degenerate);
       o.set("worstV", j.worstV);
       o.set("ok", j.ok);
-      joins.call<void>("push", o);
-    }
+      return o;
+    };
+    val joins = val::array(), seams = val::array();
+    for (const JoinResult& j : r.joins) joins.call<void>("push", joinObject(j));
+    // Closed patches joined to themselves across v0 = v1 (worstV: the u where it is worst).
+    for (const JoinResult& j : r.seams) seams.call<void>("push", joinObject(j));
+    report.set("seams", seams);
     report.set("joins", joins);
     val crossings = val::array();
     for (const Crossing& c : r.crossings) {
@@ -166,6 +170,7 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
     report.set("ok", false);
     report.set("error", err);
     report.set("joins", val::array());
+    report.set("seams", val::array());
     report.set("crossings", val::array());
   }
   return report;

@@ -68,7 +68,7 @@ export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestS
     }
     const keys = highlightedKeys(report, overrides);
     joins.show(report, keys);
-    const fails = report.joins.filter((j) => !j.ok).length;
+    const fails = report.joins.filter((j) => !j.ok).length + (report.seams || []).filter((j) => !j.ok).length;
     joins.folder.title(fails ? `Joins (${fails} FAIL)` : 'Joins');
     const byKey = new Map(report.joins.map((j) => [joinKey(j), j]));
     viewer.highlightJoins(keys.map((k) => {

@@ -22,6 +22,7 @@ struct InteriorCreases {
 constexpr double kCreaseToleranceDeg = 0.01;
 constexpr int kCreaseGrid = 128;
 
-InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n = kCreaseGrid);
+// margin: the part of the u-range left out at each end (0.05: the measure above).
+InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n = kCreaseGrid, double margin = 0.05);
 
 }  // namespace pdesurf

@@ -263,7 +263,6 @@ std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, dou
     r.patch = r.surface = sp.patch->name;
     r.end = "v1", r.edge = "v0";
     r.level = seamLevel(*sp.patch, s);
-    if (r.level == 0) r.edge = "v0 (sharp in its data)";
     // v = v1 (its inward derivative -X_v) against v = v0 (+X_v), point by point along u, on the
     // open interval: the ends u0, u1 are the loops' own points (a fill's corner, its centre).
     const auto B = openEdgeSamples(s, true, 1, s.u0, s.u1, kJoinSamples), P = openEdgeSamples(s, true, 0, s.u0, s.u1, kJoinSamples);
@@ -279,12 +278,13 @@ SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solve
   SceneReport r;
   r.sceneSize = sceneSizeOf(solved);
   r.joins = certifyJoins(scene, solved, r.sceneSize);
-  for (JoinResult& seam : certifySeams(solved, r.sceneSize)) r.joins.push_back(std::move(seam));
+  r.seams = certifySeams(solved, r.sceneSize);
   for (const SolvedPatch& sp : solved)
     if (sp.patch->fill.given) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
   if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);
   r.ok = r.crossings.empty();
   for (const JoinResult& j : r.joins) r.ok = r.ok && j.ok;
+  for (const JoinResult& j : r.seams) r.ok = r.ok && j.ok;
   for (const FillCentre& c : r.centres) r.ok = r.ok && c.ok;
   return r;
 }

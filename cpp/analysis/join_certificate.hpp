@@ -38,6 +38,7 @@ struct JoinResult {
 struct SceneReport {
   double sceneSize = 0.0;  // bounding-box diagonal of every patch (32×32 samples)
   std::vector<JoinResult> joins;
+  std::vector<JoinResult> seams;  // closed patches joined to themselves (certifySeams)
   std::vector<Crossing> crossings;
   std::vector<FillCentre> centres;  // every fill's centre (version 4)
   bool ok = true;  // every join keeps its promise, every centre is regular and nothing crosses
@@ -59,7 +60,7 @@ std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<Solve
 // figure is worst. At least G1, G2 where the patch promises curvature.
 std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double sceneSize);
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
-// Joins and seams, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
+// Joins, seams, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);
 
 }  // namespace pdesurf

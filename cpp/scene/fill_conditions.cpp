@@ -121,6 +121,17 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
                (n == 1 ? " (a single border must be a closed curve)" : ""));
   }
   if (!(size > 0)) fail(ErrorCode::InvalidField, loop.path + ".borders", "the loop is a single point");
+  // Within that tolerance the sides still part by their sources' rounding (a cap's border by
+  // 2e-11 of the aeroplane): each side is moved, linearly in σ, to corners halfway between, so
+  // the loop's data close exactly and the fill closes across v = 0 to rounding.
+  std::vector<Eigen::Vector3d> corner(n);
+  for (size_t k = 0; k < n; ++k) corner[k] = (sides[(k + n - 1) % n].x.back() + sides[k].x.front()) / 2;
+  for (size_t k = 0; k < n; ++k) {
+    Side& s = sides[k];
+    const Eigen::Vector3d c0 = corner[k] - s.x.front(), c1 = corner[(k + 1) % n] - s.x.back();
+    for (int c = 0; c < 3; ++c)
+      if (c0[c] != 0 || c1[c] != 0) s.X[c] = add(s.X[c], add(constant(c0[c]), multiply(constant(c1[c] - c0[c]), s.sigma)));
+  }
   double radius = 0.0;
   for (const Side& s : sides)
     for (int i = 0; i < kPerSide; ++i) radius += (s.x[i] - centroid).norm();

@@ -200,7 +200,9 @@ test('check: one line per join, exit 0 when every promise holds, 1 with the fail
   const lines = ok.stdout.trim().split('\n');
   assert.equal(lines.filter((l) => l.startsWith('join ')).length, 2);
   assert.match(lines[0], /^join blend:u0 - cylinder:t0 {2}promise G2 .* ok$/);
-  assert.match(lines.at(-1), /^2 joins, 0 crossings: ok$/);
+  // The blend closes on itself around v: its seam is certified like a join, at its promise.
+  assert.match(lines.find((l) => l.startsWith('seam ')), /^seam blend: v1 - v0 {2}promise G2 .* ok$/);
+  assert.match(lines.at(-1), /^2 joins, 1 seam, 0 crossings: ok$/);
 
   const loop = run('check', example('you2004-fig1'), '--json');
   assert.equal(loop.status, 1);

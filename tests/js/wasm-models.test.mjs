@@ -29,6 +29,12 @@ test('the aeroplane certifies in the module as pdesurf check says: every join, e
   assert.ok(report.joins.every((j) => j.ok), JSON.stringify(report.joins.filter((j) => !j.ok)));
   assert.equal(report.centres.length, native.centres.length);
   assert.ok(report.centres.length >= 4 && report.centres.every((c) => c.ok && !c.fold));
+  // Every closed patch joined to itself across v0 = v1: the fills closed to rounding (issue 35:
+  // mid_top was torn by 0.1), the root blends sharp at the trailing edge by their data.
+  assert.equal(report.seams.length, native.seams.length);
+  assert.ok(report.seams.length >= 14 && report.seams.every((j) => j.ok), JSON.stringify(report.seams.filter((j) => !j.ok)));
+  const seam = byName(report.seams).mid_top;
+  assert.ok(seam.level === 'G1' && seam.g0 < 1e-10 && seam.g1_deg < 1e-6, JSON.stringify(seam));
   // Join keys are unique even where one fill meets four patches.
   assert.equal(new Set(report.joins.map(joinKey)).size, report.joins.length);
   const s = byName(patches);

@@ -50,8 +50,11 @@ void compare(const SeparableSurface& s, const Mesh& plain, const Mesh& m, Worst&
         w.position = std::max(w.position, (P - X).norm() / (1 + X.norm()));
       }
       const Eigen::Vector3d cross = Xu.cross(Xv);
-      // Clear of poles (where the vertex borrows a neighbour's normal) and near-poles.
-      if (cross.squaredNorm() > 1e-12 * Xu.squaredNorm() * Xv.squaredNorm()) {
+      // Clear of poles (where the vertex borrows a neighbour's normal) and near-poles; a speed
+      // at the rounding of the position is a pole too (a fill's corner: X_v = 1.8e-16, whose
+      // direction is rounding noise in either evaluation).
+      const double scale = 1 + X.norm();
+      if (cross.squaredNorm() > 1e-12 * Xu.squaredNorm() * Xv.squaredNorm() && std::min(Xu.norm(), Xv.norm()) > 1e-12 * scale) {
         for (const Mesh* mesh : {&plain, &m}) {
           const Eigen::Vector3d N(mesh->normals[3 * k], mesh->normals[3 * k + 1], mesh->normals[3 * k + 2]);
           w.normal = std::max(w.normal, (N - cross.normalized()).norm());

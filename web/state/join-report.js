@@ -17,7 +17,7 @@ const LEVELS = new Set(['G0', 'G1', 'G2']);
 /** null when the module gave no report (an older module, or not asked). */
 export function normaliseReport(raw) {
   if (!raw || typeof raw !== 'object') return null;
-  const joins = Array.from(raw.joins || [], (j) => ({
+  const joinOf = (j) => ({
     patch: String(j.patch),
     end: endOf(j.end),
     surface: String(j.surface ?? ''),
@@ -30,7 +30,10 @@ export function normaliseReport(raw) {
     ok: Boolean(j.ok),
     degenerate: Number(j.degenerate) || 0,
     worstV: num(j.worstV), // where along the join the worst measure is
-  }));
+  });
+  const joins = Array.from(raw.joins || [], joinOf);
+  // Closed patches joined to themselves across v0 = v1 (a fill, a tube): worstV is the u there.
+  const seams = Array.from(raw.seams || [], joinOf);
   const crossings = Array.from(raw.crossings || [], (c) => ({
     patch: String(c.patch),
     other: String(c.other),
@@ -51,7 +54,7 @@ export function normaliseReport(raw) {
     curvatureRatio: num(c.curvatureRatio),
     ok: Boolean(c.ok),
   }));
-  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, crossings, crossingsChecked, centres };
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, seams, crossings, crossingsChecked, centres };
   // A declared join the module cannot certify: the scene still draws, the report says why.
   if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
   return out;
@@ -59,6 +62,14 @@ export function normaliseReport(raw) {
 
 /** A stable key for one join: the blend's name, its end and what it meets (a fill meets several). */
 export const joinKey = (j) => `${j.patch}\u0000${j.end}\u0000${j.surface}\u0000${j.edge}`;
+
+/** A closed patch's seam as one line of text (no markup). */
+export function seamText(j) {
+  const sharp = j.level === 'G0' ? ' (sharp in its data)' : '';
+  const g1 = j.g1Deg === null || !Number.isFinite(j.g1Deg) ? '—' : `${j.g1Deg.toExponential(1)}°`;
+  const g0 = j.g0 === null || !Number.isFinite(j.g0) ? '—' : j.g0.toExponential(1);
+  return `“${j.patch}” seam v0 = v1${sharp}: ${j.level}, gap ${g0}, angle ${g1}: ${j.ok ? 'ok' : 'FAILS'}`;
+}
 
 /** A fill's centre as one line of text (no markup). */
 export function centreText(c) {

@@ -5,7 +5,7 @@
 // patch and surface names from a scene or a link are shown literally.
 // DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<side>:<met>:<edge>"] with
 // data-verdict="ok" | "fail", its checkbox input, .joins-crossing, .joins-message.
-import { joinFigures, crossingText, joinKey, centreText } from '../state/join-report.js';
+import { joinFigures, crossingText, joinKey, centreText, seamText } from '../state/join-report.js';
 
 function el(tag, className, text) {
   const node = document.createElement(tag);
@@ -84,6 +84,16 @@ export function buildJoinsFolder(gui, onToggle, onOpen) {
       const list = el('ul', 'joins-list');
       for (const j of report.joins) list.append(entry(j, ticked.has(joinKey(j))));
       body.append(list);
+      if (report.seams?.length) {
+        const sl = el('ul', 'joins-seams');
+        for (const j of report.seams) {
+          const li = el('li', `joins-seam ${j.ok ? 'ok' : 'fail'}`, seamText(j));
+          li.dataset.seam = j.patch;
+          li.dataset.verdict = j.ok ? 'ok' : 'fail';
+          sl.append(li);
+        }
+        body.append(sl);
+      }
       if (report.centres?.length) {
         const cl = el('ul', 'joins-centres');
         for (const c of report.centres) {
