@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 
 namespace pdesurf {
 
@@ -21,38 +22,90 @@ std::vector<std::vector<double>> hermiteBasis(int n) {
   return h;
 }
 
-void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p) {
+namespace {
+
+// The lift's basis for one coordinate of order 2n: slot s = end*n + i as ExpPoly pieces.
+// Without decay the Hermite polynomials; with it, the u = 0 slots decay (see the header).
+std::vector<std::vector<ExpPoly>> liftBasis(int n, double decay) {
+  const std::vector<std::vector<double>> h = hermiteBasis(n);
+  std::vector<std::vector<ExpPoly>> basis(2 * n);
+  for (int slot = 0; slot < 2 * n; ++slot) {
+    ExpPoly piece;
+    piece.poly.assign(h[slot].begin(), h[slot].end());
+    basis[slot].push_back(piece);
+  }
+  if (!(decay > 0)) return basis;
+  // d^j/du^j [e^{-λu} Σ_m c_m u^m] at 0 = Σ_{m<=j} C(j, m) (-λ)^{j-m} m! c_m: lower triangular.
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> c(n, 0.0);
+    for (int j = 0; j < n; ++j) {
+      double rest = j == i ? 1.0 : 0.0, binom = 1.0, fact = 1.0;
+      for (int m = 0; m < j; ++m) {
+        rest -= binom * std::pow(-decay, j - m) * fact * c[m];
+        binom = binom * (j - m) / (m + 1), fact *= m + 1;
+      }
+      c[j] = rest / fact;  // C(j, j) = 1, j!
+    }
+    ExpPoly piece;
+    piece.rate = -decay;
+    piece.poly.assign(c.begin(), c.end());
+    basis[i] = {piece};
+    // Its values at u = 1 (e^{-λ} there: tiny, but the far end's data are met exactly).
+    for (int q = 0; q < n; ++q) {
+      const double at1 = std::exp(-decay) * evalPoly(derivativePoly(piece.poly, piece.rate, q), 1.0).real();
+      if (at1 == 0.0) continue;
+      ExpPoly fix;
+      for (const cplx& x : basis[n + q].front().poly) fix.poly.push_back(-at1 * x.real());
+      basis[i].push_back(fix);
+    }
+  }
+  return basis;
+}
+
+// pieces += factor × basis, each basis piece added to a piece of the same rate and shift where
+// there is one (a sum of polynomials is one polynomial: fewer pieces to evaluate per u).
+void scaleInto(const std::vector<ExpPoly>& basis, double factor, std::vector<ExpPoly>& pieces) {
+  for (const ExpPoly& b : basis) {
+    auto same = std::find_if(pieces.begin(), pieces.end(), [&](const ExpPoly& q) { return q.rate == b.rate && q.shift == b.shift; });
+    if (same == pieces.end()) {
+      pieces.push_back({b.rate, b.shift, {}});
+      same = pieces.end() - 1;
+    }
+    if (same->poly.size() < b.poly.size()) same->poly.resize(b.poly.size(), 0.0);
+    for (size_t k = 0; k < b.poly.size(); ++k) same->poly[k] += factor * b.poly[k];
+  }
+}
+
+}  // namespace
+
+void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, double decay) {
   for (int c = 0; c < 3; ++c) {
     const ComponentProblem& cp = p.component[c];
     const int n = static_cast<int>(cp.alpha.size()) - 1;
     if (n < 1) continue;
-    const std::vector<std::vector<double>> h = hermiteBasis(n);
+    const std::vector<std::vector<ExpPoly>> basis = liftBasis(n, decay);
     std::vector<SeparableTerm>& terms = s.component[c];
     for (SeparableTerm& t : terms) {
       if (!t.G.bernstein.empty()) continue;  // PDE solutions never have Bernstein factors
-      std::vector<double> own(2 * n, 0.0);   // -Σ_s G^(i)(e) h_s
-      for (int slot = 0; slot < 2 * n; ++slot) {
-        const double d = t.G.eval(slot < n ? 0.0 : 1.0, slot % n);
-        for (int k = 0; k < 2 * n; ++k) own[k] -= d * h[slot][k];
-      }
-      ExpPoly piece;
-      piece.poly.assign(own.begin(), own.end());
-      t.G.pieces.push_back(piece);
+      std::vector<double> own(2 * n);        // G^(i)(e) of slot s, taken off below
+      for (int slot = 0; slot < 2 * n; ++slot) own[slot] = t.G.eval(slot < n ? 0.0 : 1.0, slot % n);
+      for (int slot = 0; slot < 2 * n; ++slot)
+        if (own[slot] != 0.0) scaleInto(basis[slot], -own[slot], t.G.pieces);
     }
     for (int slot = 0; slot < 2 * n; ++slot) {
       const std::vector<VExpansion>& side = slot < n ? cp.left : cp.right;
       if (slot % n >= static_cast<int>(side.size())) continue;
       for (const VTerm& term : side[slot % n]) {
-        ExpPoly piece;
-        for (double x : h[slot]) piece.poly.push_back(x * term.coef);
+        std::vector<ExpPoly> pieces;
+        scaleInto(basis[slot], term.coef, pieces);
         // A function the surface already has (a family term the approximate solve kept) takes
         // the piece in its u-factor: no new term for tessellation to combine at every vertex.
         auto same = std::find_if(terms.begin(), terms.end(), [&](const SeparableTerm& t) { return t.g == term.g && t.G.bernstein.empty(); });
         if (same != terms.end()) {
-          same->G.pieces.push_back(std::move(piece));
+          for (ExpPoly& piece : pieces) same->G.pieces.push_back(std::move(piece));
         } else {
           UFactor G;
-          G.pieces.push_back(std::move(piece));
+          G.pieces = std::move(pieces);
           terms.push_back({term.g, std::move(G)});
         }
       }

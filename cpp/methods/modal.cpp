@@ -141,7 +141,8 @@ bool hasGeneralSlots(const PdeProblem& p) {
 SeparableSurface solveModal(const PdeProblem& p, int N, BasisCache* cache) {
   if (N < 1 || N > 2048) throw Error(ErrorCode::InvalidField, "modal needs 1 <= N <= 2048 terms");
   SeparableSurface s = solveClosedForm(modalProblem(p, N), cache);
-  if (hasGeneralSlots(p)) imposeBoundaryData(s, p);  // the joins exact, whatever N
+  // The joins exact, whatever N; a loop's corners (a fill's) carried only near the loop.
+  if (hasGeneralSlots(p)) imposeBoundaryData(s, p, p.periodicV ? 2 * (N + 1.0) : 0.0);
   return s;
 }
 

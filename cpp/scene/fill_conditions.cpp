@@ -57,7 +57,8 @@ Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangen
   const SolvedPatch& source = solved(b.patch);
   EdgeExprs e = solvedEdge(source, b.edge, tangency ? 1 : 0);
   Side s;
-  s.v0 = 2 * M_PI * k / n, s.v1 = 2 * M_PI * (k + 1) / n;
+  const auto part = fillSideRange(k, n);
+  s.v0 = part[0], s.v1 = part[1];
   s.name = "'" + b.patch + "' " + edgeName(*source.patch, b.edge);
   // The edge's parameter runs from `from` to `to` (or back) as σ runs 0..1, with w = (v - v0) /
   // (v1 - v0) and σ = w - sin(2πw) / 2π, whose speed vanishes at both ends: at the loop's
@@ -83,11 +84,11 @@ Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangen
   return s;
 }
 
-// 1 on [v0, v1] (both ends inside the loop's first and last sides), ½ at an inner corner.
-Expr indicator(double v0, double v1, bool first, bool last) {
+// 1 on [v0, v1], ½ at a corner; from = -inf: everything below v1 too, to = inf: above v0.
+Expr indicator(double v0, double v1) {
   const Expr v = variable(ExprVar::V);
-  const Expr up = first ? constant(1.0) : call(ExprFn::Sign, subtract(v, constant(v0)));
-  const Expr down = last ? constant(-1.0) : call(ExprFn::Sign, subtract(v, constant(v1)));
+  const Expr up = std::isinf(v0) ? constant(1.0) : call(ExprFn::Sign, subtract(v, constant(v0)));
+  const Expr down = std::isinf(v1) ? constant(-1.0) : call(ExprFn::Sign, subtract(v, constant(v1)));
   return multiply(constant(0.5), subtract(up, down));
 }
 
@@ -212,18 +213,32 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   // From a at the side's start to b at its end, in σ (so its v-derivative too is 0 at corners).
   const auto linear = [](double a, double b, const Expr& sigma) { return add(constant(a), multiply(constant(b - a), sigma)); };
 
+  // Border 0 runs over [-π/n, π/n]: its own expression on [0, π/n] (and below, so that the
+  // certificate may read it there), the same shifted by 2π on [2π - π/n, 2π].
+  const Expr wrapped = subtract(variable(ExprVar::V), constant(2 * M_PI));
   for (int c = 0; c < 3; ++c) {
     Expr x, d;
+    const auto place = [](Expr& sum, const Expr& chi, const Expr& e) { sum = sum ? add(sum, multiply(chi, e)) : multiply(chi, e); };
     for (size_t k = 0; k < n; ++k) {
       const Side& s = sides[k];
-      const Expr chi = n == 1 ? constant(1.0) : indicator(s.v0, s.v1, k == 0, k == n - 1);
-      x = x ? add(x, multiply(chi, s.X[c])) : multiply(chi, s.X[c]);
-      if (!tangency) continue;
-      const auto& m = mix[k];
-      Expr dk = multiply(linear(m[0], m[2], s.sigma), multiply(constant(scale[k]), s.D[c]));
-      if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.sigma), s.T[c]));
-      dk = multiply(chi, dk);
-      d = d ? add(d, dk) : dk;
+      Expr dk;
+      if (tangency) {
+        const auto& m = mix[k];
+        dk = multiply(linear(m[0], m[2], s.sigma), multiply(constant(scale[k]), s.D[c]));
+        if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.sigma), s.T[c]));
+      }
+      if (n == 1) {
+        x = s.X[c], d = dk;
+        continue;
+      }
+      const bool first = k == 0;
+      const Expr chi = indicator(first ? -INFINITY : s.v0, s.v1);
+      place(x, chi, s.X[c]);
+      if (tangency) place(d, chi, dk);
+      if (!first) continue;
+      const Expr tail = indicator(s.v0 + 2 * M_PI, INFINITY);
+      place(x, tail, substitute(s.X[c], ExprVar::V, wrapped));
+      if (tangency) place(d, tail, substitute(dk, ExprVar::V, wrapped));
     }
     ComponentProblem& cp = out.component[c];
     const std::string text = loop.path + " (the loop)";

@@ -83,7 +83,8 @@ void linkFill(Scene& scene, size_t index) {
     m.atT1 = b.edge % 2 == 1;
     m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
     m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
-    m.targetFrom = 2 * M_PI * k / n, m.targetTo = 2 * M_PI * (k + 1) / n;
+    const auto part = fillSideRange(k, n);
+    m.targetFrom = part[0], m.targetTo = part[1];
     m.eased = n > 1;
     m.by = b.path;
     source.meets.push_back(m);

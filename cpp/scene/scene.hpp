@@ -105,11 +105,20 @@ struct Meets {
   bool eased = false;
 };
 
+// The part of a fill's v (its loop u = 0) that border k of n runs over. With n > 1 the loop
+// starts halfway along border 0, [2π(k - ½)/n, 2π(k + ½)/n]: its corners are never at v = 0,
+// so the fill's seam v = 0 ≡ 2π runs from a smooth point of its data and is G1 to rounding
+// (border 0's part wraps: [-π/n, π/n], its expression valid on both sides of 0).
+inline std::array<double, 2> fillSideRange(size_t k, size_t n) {
+  if (n == 1) return {0.0, 2 * M_PI};
+  return {2 * M_PI * (k - 0.5) / n, 2 * M_PI * (k + 0.5) / n};
+}
+
 // How much a fill's sides slow down at the loop's corners: their speed there is 1 - kFillEase
 // of the mean (scene/fill_conditions.cpp). Fully (1): the loop's data are then C2 in v at the
 // corners and no kink runs inward along a corner's ray (half way, 0.5, until issue 35: creases
 // of 0.3° to 7° along the rays).
-constexpr double kFillEase = 1.0;
+constexpr double kFillEase = 0.75;
 
 // Version 4: one border of a fill's loop, or the edge a chained end continues: an edge of
 // another patch (a surface's t0/t1, a pde patch's u0/u1, a Bézier border), optionally a part
