@@ -1,4 +1,4 @@
-// A fill's centre (docs/fills.md): its border u = 1 collapses to one point, which must be a
+// A fill's centre (docs/chains-and-fills.md): its border u = 1 collapses to one point, which must be a
 // regular point of the surface. Measured from analytic derivatives of the solved fill:
 //   the normal on rings closing in on the centre converges (its spread around the ring, in
 //   degrees, at u = 1 - 2^-6 and at the innermost ring u = 1 - 2^-12);

@@ -1,11 +1,11 @@
 // Version 4: the conditions a pde patch takes from other, already solved patches, written into a
 // copy of its problem before it is solved (solveScene solves in Scene::solveOrder).
-//   A chained end (docs/chains.md) continues the edge it names: with d the derivative across
+//   A chained end (docs/chains-and-fills.md) continues the edge it names: with d the derivative across
 //   that edge pointing out of its patch and p the end's power,
 //     X = the edge,  X_u = ±p d  (+ at u0, - at u1),  X_uu = p² d_dd,
 //   so consecutive patches meet G1 (4th order) or G2 (6th order), exactly, from the solved
 //   surface's own terms (a pde patch's end) or its control net (a Bézier border).
-//   A fill (docs/fills.md): scene/fill_conditions.cpp.
+//   A fill (docs/chains-and-fills.md): scene/fill_conditions.cpp.
 #pragma once
 #include <functional>
 #include <memory>

@@ -1,15 +1,19 @@
-// A fill's conditions (docs/fills.md). The loop is the fill's border u = 0: v in [0, 2π], border
-// k of N on [2πk/N, 2π(k+1)/N], mapped linearly onto the part of the edge it names. Along it
+// A fill's conditions (docs/chains-and-fills.md). The loop is the fill's border u = 0: v in
+// [0, 2π], border k of N on fillSideRange(k, N) (border 0 wrapping through v = 0), mapped onto
+// the part of the edge it names through σ, which slows down at the corners. Along it
 //   X(0, v)   = the borders' positions, piecewise,
 //   X_u(0, v) = k_k d_k: each border's derivative across its edge out of its patch, continued
 //               into the fill (so the fill is G1 to every side), scaled so that its mean length
-//               is the loop's mean radius R (times the border's power);
+//               is the loop's mean radius R (times the border's power), plus a tangential part
+//               at the corners;
 // and at u = 1 a centre point C with a tangent plane normal to n:
 //   X(1, v) = C,  X_u(1, v) = -(a cos v + b sin v),
 // a and b the first Fourier harmonic of the loop projected on that plane about C, so the fill
 // leaves its centre as a linear image of polar coordinates: a regular point (not a cone).
 // n is the loop's area vector (Newell) unless given; C the loop's centroid lifted along n by
-// height × the mean rise of X_u(0, v) along n, unless given.
+// height × the mean rise of X_u(0, v) along n, unless given. The data are one periodic loop
+// (PdeProblem::periodicV): the modal method expands them whole and lifts its remainder with a
+// decaying profile (methods/boundary_lift.hpp).
 #include <Eigen/Geometry>
 #include <cmath>
 #include <sstream>

@@ -1,4 +1,4 @@
-// Version 4's "fill" patch (docs/fills.md): a pde patch closing a loop of borders of other
+// Version 4's "fill" patch (docs/chains-and-fills.md): a pde patch closing a loop of borders of other
 // patches. Read here; its conditions come from the solved borders (scene/fill_conditions.cpp).
 #include <cmath>
 

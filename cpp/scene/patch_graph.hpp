@@ -1,5 +1,5 @@
 // Version 4: patches whose conditions come from other patches (chained ends, fills' borders,
-// docs/chains.md and docs/fills.md). Once every patch is read: each reference is checked
+// docs/chains-and-fills.md). Once every patch is read: each reference is checked
 // against the patch it names, recorded as a join on that patch (Patch::meets, for the
 // certificate) and as a dependency; the scene gets an order to solve in, or a cycle is refused.
 #pragma once

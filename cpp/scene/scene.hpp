@@ -132,7 +132,7 @@ struct LoopBorder {
   std::string path;      // "patches[3].borders[1]", for errors
 };
 
-// Version 4, kind "fill" (docs/fills.md): a pde patch that closes a loop of N borders of other
+// Version 4, kind "fill" (docs/chains-and-fills.md): a pde patch that closes a loop of N borders of other
 // patches. u = 0 is the loop (v in [0, 2π], border k on [2πk/N, 2π(k+1)/N]); u = 1 collapses to
 // a centre point with a tangent plane. Order 2 (position) or 4 (tangency along every side).
 struct FillLoop {

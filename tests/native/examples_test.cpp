@@ -51,7 +51,7 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
         // data exactly and approximates the interior: its residual relative to the largest
         // operator term (interiorResidual, methods/measures.hpp; fig5 1.5e-10, ref-pipe-tjoint 2e-11).
         // A fill's loop has corners, where its cross derivatives turn: its residual there is
-        // the corner's, not the method's (docs/fills.md); its joins and centre are judged instead.
+        // the corner's, not the method's (docs/chains-and-fills.md); its joins and centre are judged instead.
         if (sp.used.kind == MethodKind::Closed) CHECK(testing::pdeResidual(pde, sp.surface) < 1e-9);
         // So do the aeroplane's wing and stabiliser root blends, whose rims are pointed at both
         // tips (residual 0.91 next to the tips, docs/chains-and-fills.md); their joins are
