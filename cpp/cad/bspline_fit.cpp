@@ -66,7 +66,14 @@ void withCreases(std::vector<double>& breaks, std::vector<bool>& crease, const s
   std::sort(all.begin(), all.end());
   breaks.clear();
   crease.clear();
-  for (const auto& [v, k] : all) breaks.push_back(v), crease.push_back(k);
+  for (size_t i = 0; i < all.size(); ++i) {
+    // A piece between two creases (or a crease and an end) that is a single span is halved: a
+    // degree-5 piece of one span has six poles against the five grid points a span starts
+    // with (a fill of three sides has such pieces next to its seam).
+    if (i > 0 && (all[i].second || i + 1 == all.size()) && (all[i - 1].second || i == 1))
+      breaks.push_back((all[i - 1].first + all[i].first) / 2), crease.push_back(false);
+    breaks.push_back(all[i].first), crease.push_back(all[i].second);
+  }
 }
 
 std::vector<double> uniformBreaks(double a, double b, int n) {
@@ -182,7 +189,8 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
     if (inner > 0) nu.compute(AfT * Af);
     nv.compute(AvT * Av);
     if ((inner > 0 && nu.info() != Eigen::Success) || nv.info() != Eigen::Success)
-      throw Error(ErrorCode::Singular, "the fit's least-squares system is singular");
+      throw Error(ErrorCode::Singular, std::string("the fit's least-squares system is singular (in ") + (nv.info() != Eigen::Success ? "v, " : "u, ") +
+                                           std::to_string(nsu) + " × " + std::to_string(nsv) + " spans)");
     const double startStep = (ku[size_t(p) + 1] - ku[1]) / p, endStep = (ku[size_t(n + p - 1)] - ku[size_t(n - 1)]) / p;
     std::vector<double> uResidual(size_t(nsu), 0.0), vResidual(size_t(nsv), 0.0);
     Eigen::MatrixXd ru = Eigen::MatrixXd::Zero(Au.rows(), Av.rows()), rv = ru;

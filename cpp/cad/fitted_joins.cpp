@@ -14,7 +14,13 @@ std::vector<EdgePoint> fittedEdge(const BSplineSurface& b, const SeparableSurfac
   std::vector<EdgePoint> out;
   out.reserve(at.size());
   for (double a : at) {
-    const double u = alongU ? a : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : a;
+    const double u = alongU ? a : (end ? s.u1 : s.u0);
+    double v = alongU ? (end ? s.v1 : s.v0) : a;
+    // A fill's border 0 runs over [-π/n, π/n] of its closed v (fillSideRange): the face holds
+    // the part below v0 one period on.
+    const double period = s.v1 - s.v0;
+    if (v < s.v0) v += period;
+    if (v > s.v1) v -= period;
     const Eigen::Vector3d X = evaluate(b, u, v), Xu = evaluate(b, u, v, 1, 0), Xv = evaluate(b, u, v, 0, 1);
     const Eigen::Vector3d Xuu = evaluate(b, u, v, 2, 0), Xuv = evaluate(b, u, v, 1, 1), Xvv = evaluate(b, u, v, 0, 2);
     out.push_back(edgePointFrom(alongU, end, X, Xu, Xv, Xuu, Xuv, Xvv));

@@ -21,6 +21,7 @@
 #include "common/errors.hpp"
 #include "scene/chain_conditions.hpp"
 #include "scene/expression_fields.hpp"
+#include "scene/loop_sheet.hpp"
 #include "scene/patch_graph.hpp"
 #include "scene/solved_edges.hpp"
 
@@ -49,17 +50,23 @@ Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
 struct Side {
   Vec3Expr X, D;   // in the fill's v
   Vec3Expr T;      // the edge's tangent along its own parameter (times the part's length): never 0
+  // Curvature only: the source's second derivatives along (ss), along and across (sw) and
+  // across (ww) its edge, in the parameters of T and D.
+  Vec3Expr Xss, Xsw, Xww;
   Expr sigma;      // the side's parameter 0..1 as a function of v (see sideOf)
   double v0 = 0, v1 = 0;
   std::string name;  // "'rear' u0", for messages
-  std::vector<Eigen::Vector3d> x, d;  // samples at kPerSide + 1 evenly spaced v (ends included)
+  std::vector<Eigen::Vector3d> x, d, t, dd;  // samples at kPerSide + 1 evenly spaced v (ends included)
 };
 
-Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangency) {
+// depth: the derivatives across the loop the fill takes from its borders (0 position, 1
+// tangency, 2 curvature).
+Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, int depth) {
+  const bool tangency = depth >= 1;
   const LoopBorder& b = fill.fill.borders[k];
   const size_t n = fill.fill.borders.size();
   const SolvedPatch& source = solved(b.patch);
-  EdgeExprs e = solvedEdge(source, b.edge, tangency ? 1 : 0);
+  EdgeExprs e = solvedEdge(source, b.edge, depth);
   Side s;
   const auto part = fillSideRange(k, n);
   s.v0 = part[0], s.v1 = part[1];
@@ -77,13 +84,25 @@ Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, bool tangen
     s.X[c] = substitute(e.X[c], ExprVar::V, param);
     s.D[c] = tangency ? substitute(e.out[c], ExprVar::V, param) : constant(0.0);
     s.T[c] = tangency ? multiply(constant(span), substitute(derivative(e.X[c], ExprVar::V), ExprVar::V, param)) : constant(0.0);
+    if (depth < 2) continue;
+    s.Xss[c] = multiply(constant(span * span), substitute(derivative(derivative(e.X[c], ExprVar::V), ExprVar::V), ExprVar::V, param));
+    s.Xsw[c] = multiply(constant(span), substitute(derivative(e.out[c], ExprVar::V), ExprVar::V, param));
+    s.Xww[c] = substitute(e.outOut[c], ExprVar::V, param);
   }
   for (int i = 0; i <= kPerSide; ++i) {
     const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
     s.x.push_back(eval3(s.X, v));
     s.d.push_back(eval3(s.D, v));
-    if (!s.x.back().allFinite() || !s.d.back().allFinite())
-      fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at v = " + number(v));
+    bool finite = s.x.back().allFinite() && s.d.back().allFinite();
+    if (depth >= 1) {
+      s.t.push_back(eval3(s.T, v));
+      finite = finite && s.t.back().allFinite();
+    }
+    if (depth >= 2) {
+      s.dd.push_back(eval3(s.Xww, v));
+      finite = finite && s.dd.back().allFinite() && eval3(s.Xss, v).allFinite() && eval3(s.Xsw, v).allFinite();
+    }
+    if (!finite) fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at v = " + number(v));
   }
   return s;
 }
@@ -100,11 +119,12 @@ Expr indicator(double v0, double v1) {
 
 void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) {
   const FillLoop& loop = fill.fill;
-  const bool tangency = loop.continuity == Continuity::Tangency;
+  const int depth = static_cast<int>(loop.continuity);
+  const bool tangency = depth >= 1, curvature = depth >= 2;
   const size_t n = loop.borders.size();
   out.periodicV = true;  // one loop: the fill closes on itself across v = 0 (corner or not)
   std::vector<Side> sides;
-  for (size_t k = 0; k < n; ++k) sides.push_back(sideOf(fill, k, solved, tangency));
+  for (size_t k = 0; k < n; ++k) sides.push_back(sideOf(fill, k, solved, depth));
 
   // The loop's size, centroid and mean radius, over evenly spaced v.
   Eigen::Vector3d lo = sides[0].x[0], hi = lo, centroid = Eigen::Vector3d::Zero(), area = Eigen::Vector3d::Zero();
@@ -161,9 +181,23 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     for (int i = 0; i < kPerSide; ++i) rise += scale[k] * sides[k].d[i].dot(normal);
   }
   rise /= static_cast<double>(n * kPerSide);
-  const Eigen::Vector3d centre = loop.centreGiven ? loop.centre : Eigen::Vector3d(centroid + loop.height * rise * normal);
+  // The sheet the loop lies in (scene/loop_sheet.hpp): where a quadric height over the plane
+  // follows the loop and its borders' tangent planes, the centre goes on it (height × its
+  // height at the centroid), leaves along its tangent plane and, curvature fills, with its
+  // curvature. Else (a cap on a tube: its borders are steep over the plane) the centroid is
+  // lifted by height × the mean rise of the cross derivatives.
+  LoopSheet sheet;
+  if (tangency && !loop.normalGiven) {
+    std::vector<Eigen::Vector3d> xs, ts, ds;
+    for (size_t k = 0; k < n; ++k)
+      for (int i = 0; i < kPerSide; ++i) xs.push_back(sides[k].x[i]), ts.push_back(sides[k].t[i]), ds.push_back(sides[k].d[i]);
+    sheet = fitLoopSheet(xs, ts, ds, centroid, normal, radius);
+  }
+  const double lift = sheet.fitted ? sheet.c[0] : rise;
+  const Eigen::Vector3d centre = loop.centreGiven ? loop.centre : Eigen::Vector3d(centroid + loop.height * lift * normal);
 
-  // The centre's spokes: the first harmonic of the loop projected on the tangent plane.
+  // The centre's spokes: the first harmonic of the loop projected on the tangent plane (the
+  // sheet's, when fitted: the plane's, lifted by its slopes).
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
   for (const Side& s : sides)
     for (int i = 0; i < kPerSide; ++i) {
@@ -173,6 +207,10 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
       a += p * std::cos(v), b += p * std::sin(v);
     }
   a *= 2.0 / (n * kPerSide), b *= 2.0 / (n * kPerSide);
+  if (sheet.fitted) {
+    a += (sheet.c[1] * a.dot(sheet.e1) + sheet.c[2] * a.dot(sheet.e2)) * normal;
+    b += (sheet.c[1] * b.dot(sheet.e1) + sheet.c[2] * b.dot(sheet.e2)) * normal;
+  }
   if (!(a.cross(b).norm() > 1e-3 * radius * radius))
     fail(ErrorCode::InvalidField, loop.path + ".borders",
          "the loop does not turn around the centre's normal (seen along it, it is flat or folded): the centre cannot be regular");
@@ -217,32 +255,117 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   // From a at the side's start to b at its end, in σ (so its v-derivative too is 0 at corners).
   const auto linear = [](double a, double b, const Expr& sigma) { return add(constant(a), multiply(constant(b - a), sigma)); };
 
+  // Curvature: X_uu along side k continues its border's surface S in the direction the fill
+  // leaves it, X ≈ S(s + αu, βu) with β = γ k_k: X_uu = α² S_ss + 2αβ S_sw + β² S_ww, whose
+  // normal part is S's second fundamental form in that direction (G2 by construction). At a
+  // corner the two sides must agree on it; a tangential part (δ_T T + δ_D D, linear in σ) lets
+  // them meet at their mean without touching the normal part.
+  std::vector<std::array<double, 4>> tangential(n, {0.0, 0.0, 0.0, 0.0});  // δ_T, δ_D at v0; at v1
+  const auto secondAt = [&](size_t k, double v, double sigma) {
+    const Side& s = sides[k];
+    const auto& m = mix[k];
+    const double alpha = m[1] + (m[3] - m[1]) * sigma, beta = (m[0] + (m[2] - m[0]) * sigma) * scale[k];
+    return Eigen::Vector3d(alpha * alpha * eval3(s.Xss, v) + 2 * alpha * beta * eval3(s.Xsw, v) + beta * beta * eval3(s.Xww, v));
+  };
+  for (size_t k = 0; k < n && curvature && n > 1; ++k) {
+    const size_t j = (k + 1) % n;
+    const Side &s = sides[k], &next = sides[j];
+    const double ve = s.v1 - kInside * (s.v1 - s.v0), vs = next.v0 + kInside * (next.v1 - next.v0);
+    const Eigen::Vector3d De = eval3(s.D, ve), Ds = eval3(next.D, vs), Te = eval3(s.T, ve), Ts = eval3(next.T, vs);
+    const Eigen::Vector3d We = mix[k][2] * scale[k] * De + mix[k][3] * Te, Ws = mix[j][0] * scale[j] * Ds + mix[j][1] * Ts;
+    const std::string corner = "the corner where " + s.name + " meets " + next.name;
+    if (!((We - Ws).norm() <= 1e-6 * std::max(We.norm(), Ws.norm())))
+      fail(ErrorCode::InvalidField, loop.borders[j].path,
+           "a curvature fill cannot be G2 at " + corner + ": the two sides cannot leave it along one direction; fill it with tangency");
+    const Eigen::Vector3d Ne = Te.cross(De).normalized(), Ns = Ts.cross(Ds).normalized();
+    const Eigen::Vector3d Qe = secondAt(k, ve, 1.0), Qs = secondAt(j, vs, 0.0);
+    const double planes = std::atan2(Ne.cross(Ns).norm(), std::abs(Ne.dot(Ns))) * 180 / M_PI;
+    const double ke = Qe.dot(Ne) / We.squaredNorm(), ks = Qs.dot(Ne.dot(Ns) < 0 ? Eigen::Vector3d(-Ns) : Ns) / Ws.squaredNorm();
+    const double room = 1e-6 * std::max({std::abs(ke), std::abs(ks), 1.0 / radius});
+    if (!(planes <= 1e-6) || !(std::abs(ke - ks) <= room))
+      fail(ErrorCode::InvalidField, loop.borders[j].path,
+           "a curvature fill cannot be G2 at " + corner + ": " +
+               (planes > 1e-6 ? "the two surfaces' tangent planes differ there by " + number(planes) + "°"
+                              : "the two surfaces bend differently there (normal curvature " + number(ke) + " against " + number(ks) + " along the fill's direction)") +
+               "; fill it with tangency, or make the surfaces meet G2 at that corner");
+    const Eigen::Vector3d M = (Qe + Qs) / 2;
+    const auto inPlane = [](const Eigen::Vector3d& T, const Eigen::Vector3d& D, const Eigen::Vector3d& d) {
+      Eigen::Matrix<double, 3, 2> A;
+      A << T, D;
+      return Eigen::Vector2d(A.colPivHouseholderQr().solve(d));
+    };
+    const Eigen::Vector2d de = inPlane(Te, De, M - Qe), ds = inPlane(Ts, Ds, M - Qs);
+    tangential[k][2] = de(0), tangential[k][3] = de(1), tangential[j][0] = ds(0), tangential[j][1] = ds(1);
+  }
+  // The centre: an umbilic of the loop's mean normal curvature across its borders, so the fill
+  // leaves C as X ≈ C + r p(v) + ½ r² κ |p(v)|² n (r = 1 - u, p(v) = a cos v + b sin v): a
+  // function of r cos v, r sin v only (harmonics 0 and 2), a regular point.
+  double kappa = 0.0;
+  for (size_t k = 0; k < n && curvature; ++k)
+    for (int i = 0; i < kPerSide; ++i) {
+      const Side& s = sides[k];
+      Eigen::Vector3d N = s.t[i].cross(s.d[i]).normalized();
+      if (N.dot(normal) < 0) N = -N;
+      kappa += s.dd[i].dot(N) / s.d[i].squaredNorm();
+    }
+  kappa /= static_cast<double>(n * kPerSide);
+  // X_uu(1, v) = B(v) n with B a quadratic form of p(v) = a cos v + b sin v (harmonics 0 and 2:
+  // a function of r cos v, r sin v, a regular point): the sheet's 2 h₂(p) when fitted (exact
+  // for a quadric sheet), else the umbilic κ |p|². As its constant, cos 2v and sin 2v parts.
+  std::array<double, 3> centreBend{};
+  if (curvature) {
+    const auto harmonics = [](double pa, double pb, double qa, double qb) {  // (pa cos + pb sin)(qa cos + qb sin)
+      return std::array<double, 3>{(pa * qa + pb * qb) / 2, (pa * qa - pb * qb) / 2, (pa * qb + pb * qa) / 2};
+    };
+    std::array<std::array<double, 3>, 3> terms;  // ξ², ξη, η² as harmonics; or |p|²
+    double weights[3];
+    if (sheet.fitted) {
+      const double a1 = a.dot(sheet.e1), b1 = b.dot(sheet.e1), a2 = a.dot(sheet.e2), b2 = b.dot(sheet.e2);
+      terms = {harmonics(a1, b1, a1, b1), harmonics(a1, b1, a2, b2), harmonics(a2, b2, a2, b2)};
+      weights[0] = 2 * sheet.c[3], weights[1] = 2 * sheet.c[4], weights[2] = 2 * sheet.c[5];
+    } else {
+      terms = {std::array<double, 3>{(a.dot(a) + b.dot(b)) / 2, (a.dot(a) - b.dot(b)) / 2, a.dot(b)}, {}, {}};
+      weights[0] = kappa, weights[1] = weights[2] = 0.0;
+    }
+    for (int t = 0; t < 3; ++t)
+      for (int h = 0; h < 3; ++h) centreBend[h] += weights[t] * terms[t][h];
+  }
+
   // Border 0 runs over [-π/n, π/n]: its own expression on [0, π/n] (and below, so that the
   // certificate may read it there), the same shifted by 2π on [2π - π/n, 2π].
   const Expr wrapped = subtract(variable(ExprVar::V), constant(2 * M_PI));
   for (int c = 0; c < 3; ++c) {
-    Expr x, d;
+    Expr x, d, dd;
     const auto place = [](Expr& sum, const Expr& chi, const Expr& e) { sum = sum ? add(sum, multiply(chi, e)) : multiply(chi, e); };
     for (size_t k = 0; k < n; ++k) {
       const Side& s = sides[k];
-      Expr dk;
+      Expr dk, ddk;
       if (tangency) {
         const auto& m = mix[k];
-        dk = multiply(linear(m[0], m[2], s.sigma), multiply(constant(scale[k]), s.D[c]));
-        if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(linear(m[1], m[3], s.sigma), s.T[c]));
+        const Expr beta = multiply(linear(m[0], m[2], s.sigma), constant(scale[k])), alpha = linear(m[1], m[3], s.sigma);
+        dk = multiply(beta, s.D[c]);
+        if (m[1] != 0.0 || m[3] != 0.0) dk = add(dk, multiply(alpha, s.T[c]));
+        if (curvature) {
+          const auto& q = tangential[k];
+          ddk = add(add(multiply(multiply(alpha, alpha), s.Xss[c]), multiply(multiply(constant(2.0), multiply(alpha, beta)), s.Xsw[c])),
+                    multiply(multiply(beta, beta), s.Xww[c]));
+          ddk = add(ddk, add(multiply(linear(q[0], q[2], s.sigma), s.T[c]), multiply(linear(q[1], q[3], s.sigma), s.D[c])));
+        }
       }
       if (n == 1) {
-        x = s.X[c], d = dk;
+        x = s.X[c], d = dk, dd = ddk;
         continue;
       }
       const bool first = k == 0;
       const Expr chi = indicator(first ? -INFINITY : s.v0, s.v1);
       place(x, chi, s.X[c]);
       if (tangency) place(d, chi, dk);
+      if (curvature) place(dd, chi, ddk);
       if (!first) continue;
       const Expr tail = indicator(s.v0 + 2 * M_PI, INFINITY);
       place(x, tail, substitute(s.X[c], ExprVar::V, wrapped));
       if (tangency) place(d, tail, substitute(dk, ExprVar::V, wrapped));
+      if (curvature) place(dd, tail, substitute(ddk, ExprVar::V, wrapped));
     }
     ComponentProblem& cp = out.component[c];
     const std::string text = loop.path + " (the loop)";
@@ -251,6 +374,12 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     if (tangency) {
       cp.left[1] = scene_json::slotFromExpr(d, text);
       cp.right[1] = {{VFunction{Family::Cos, 1.0}, -a[c]}, {VFunction{Family::Sin, 1.0}, -b[c]}};
+    }
+    if (curvature) {
+      cp.left[2] = scene_json::slotFromExpr(dd, text);
+      cp.right[2] = {{VFunction{Family::Poly, 1.0, 0}, centreBend[0] * normal[c]},
+                     {VFunction{Family::Cos, 2.0}, centreBend[1] * normal[c]},
+                     {VFunction{Family::Sin, 2.0}, centreBend[2] * normal[c]}};
     }
   }
 }

@@ -56,11 +56,7 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
     fail(ErrorCode::InvalidField, path + ".borders",
          "a fill closes 1 (a closed border) to " + std::to_string(kMaxSides) + " borders; this one has " + std::to_string(borders.size()));
   for (size_t k = 0; k < borders.size(); ++k) fill.borders.push_back(parseBorder(borders[k], path + ".borders[" + std::to_string(k) + "]", r));
-  if (j.contains("continuity")) {
-    fill.continuity = continuityOf(j["continuity"], path + ".continuity");
-    if (fill.continuity == Continuity::Curvature)
-      fail(ErrorCode::InvalidField, path + ".continuity", "a fill meets its borders with position or tangency continuity");
-  }
+  if (j.contains("continuity")) fill.continuity = continuityOf(j["continuity"], path + ".continuity");
   if (j.contains("centre")) fill.centreGiven = true, fill.centre = vectorField(j["centre"], path + ".centre", r);
   if (j.contains("normal")) {
     fill.normalGiven = true;
@@ -73,11 +69,12 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
     if (std::abs(fill.height) > 100) fail(ErrorCode::InvalidField, path + ".height", "outside [-100, 100]");
   }
   // The rest is an ordinary pde patch over v in [0, 2π] whose conditions are all derived.
-  const int order = fill.continuity == Continuity::Position ? 2 : 4;
+  const int order = fill.continuity == Continuity::Position ? 2 : fill.continuity == Continuity::Tangency ? 4 : 6;
   json pde = {{"name", patch.name}, {"kind", "pde"}, {"v_range", json::array({0.0, 2 * M_PI})}, {"boundary", json::object()}};
   pde["operator"] = j.contains("operator") ? j["operator"]
                     : order == 2           ? json{{"order", 2}, {"s", 1}, {"t", 1}}
-                                           : json{{"order", 4}, {"b", 1}, {"c", 2}, {"d", 1}};
+                    : order == 4           ? json{{"order", 4}, {"b", 1}, {"c", 2}, {"d", 1}}
+                                           : json{{"order", 6}, {"a", 1}};
   if (j.contains("force")) pde["force"] = j["force"];
   // The loop's data are piecewise (their cross derivatives jump at the corners): a fixed modal
   // series with the exact boundary lift, rather than auto's refinement, which would not settle.
@@ -87,7 +84,7 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
   for (int c = 0; c < 3; ++c)
     if (patch.op[c].order != order)
       fail(ErrorCode::InvalidField, path + ".operator",
-           std::string(order == 2 ? "position" : "tangency") + " continuity needs an order-" + std::to_string(order) + " operator; " + kAxis[c] +
+           std::string(order == 2 ? "position" : order == 4 ? "tangency" : "curvature") + " continuity needs an order-" + std::to_string(order) + " operator; " + kAxis[c] +
                " has order " + std::to_string(patch.op[c].order));
 }
 

@@ -152,6 +152,7 @@ TEST_CASE("bad loops are named errors and nothing is drawn") {
     CHECK(parseErrorOf(e.dump()).find("is a fill") != std::string::npos);
     e = s;
     e["patches"][4]["continuity"] = "curvature";
-    CHECK(parseErrorOf(e.dump()).find("position or tangency") != std::string::npos);
+    e["patches"][4]["operator"] = {{"order", 4}, {"b", 1}, {"c", 2}, {"d", 1}};
+    CHECK(parseErrorOf(e.dump()).find("curvature continuity needs an order-6 operator") != std::string::npos);
   }
 }
