@@ -14,7 +14,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
 
 namespace {
 
-constexpr int kMinSides = 1, kMaxSides = 6;
+constexpr int kMinSides = 1, kMaxSides = 8;
 
 LoopBorder parseBorder(const json& j, const std::string& path, const Resolver& r) {
   allowOnly(j, path, {"patch", "at", "range", "reverse", "power"});

@@ -287,6 +287,15 @@ for (const size of SIZES) {
         // Failing joins start highlighted.
         assert.equal(await item.locator('input[type=checkbox]').isChecked(), !j.ok);
       }
+      // The blend closes around v: its seam is listed as a join of the blend with itself.
+      const seams = folder.locator('.joins-seam');
+      assert.ok(s.report.seams.length >= 1, 'Fig. 4a\'s blend is closed in v');
+      assert.equal(await seams.count(), s.report.seams.length);
+      for (const [k, j] of s.report.seams.entries()) {
+        // (Fig. 4a's data turn at v = 0: the seam is held to G0 there, "sharp in its data".)
+        assert.match(await seams.nth(k).textContent(), new RegExp(`^“${j.patch}” seam v0 = v1( \\(sharp in its data\\))?: G[012], gap [-\\d.e+]+, angle [-\\d.e+]+°: ok$`));
+        assert.equal(await seams.nth(k).getAttribute('data-verdict'), 'ok');
+      }
       const firstOk = s.report.joins.findIndex((j) => j.ok);
       const pick = firstOk >= 0 ? firstOk : 0;
       const box = items.nth(pick).locator('input[type=checkbox]');

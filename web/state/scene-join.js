@@ -216,14 +216,14 @@ export function addFill(scene, borders, endpoints, options = {}) {
 }
 
 /**
- * Add a PDE fill (kind "fill", docs/chains-and-fills.md) closing a loop of 1 to 6 picked
+ * Add a PDE fill (kind "fill", docs/chains-and-fills.md) closing a loop of 1 to 8 picked
  * borders ({ surface, at: 't0' | 't1' }, in any order; one border must be a closed curve),
  * G1 to each with a regular centre. endpoints[k] = [start, end] as for addFill; the loop's
  * order and each border's direction are found from them. options: { continuity: 'tangency'
  * (or 'position'), tolerance, name }. Returns the fill's name.
  */
 export function addLoopFill(scene, borders, endpoints, options = {}) {
-  if (!Array.isArray(borders) || borders.length < 1 || borders.length > 6) throw new Error('borders: expected 1 to 6 borders');
+  if (!Array.isArray(borders) || borders.length < 1 || borders.length > 8) throw new Error('borders: expected 1 to 8 borders');
   if (!Array.isArray(endpoints) || endpoints.length !== borders.length) throw new Error('endpoints: expected the two ends of each border');
   checkPicks(scene, borders, endpoints);
   const continuity = options.continuity ?? 'tangency';

@@ -52,7 +52,7 @@ export function buildBuildFolder(gui, handlers) {
   custom.close();
 
   const draft = { a: NONE, b: NONE, continuity: 'tangency', power: 1, pick: false };
-  // The fill's kind: a Bézier patch (four borders, seed 002) or a PDE fill (1 to 6 borders,
+  // The fill's kind: a Bézier patch (four borders, seed 002) or a PDE fill (1 to 8 borders,
   // G1 to each, a regular centre; docs/chains-and-fills.md).
   const FILL_KINDS = { 'Bézier (4 borders)': 'bezier', 'PDE (1–6 borders)': 'pde' };
   const SLOTS = ['b0', 'b1', 'b2', 'b3', 'b4', 'b5'];
@@ -112,7 +112,7 @@ export function buildBuildFolder(gui, handlers) {
   function makeFill() {
     if (fillDraft.kind === 'pde') {
       const borders = SLOTS.map((k) => chosen(fillDraft[k])).filter(Boolean);
-      if (!borders.length) return say('choose the borders around the hole, 1 to 6 (or pick them in the view)', true);
+      if (!borders.length) return say('choose the borders around the hole, 1 to 8 (or pick them in the view)', true);
       return handlers.onFill(borders, { kind: 'pde' });
     }
     const borders = SLOTS.slice(0, 4).map((k) => chosen(fillDraft[k]));
