@@ -16,11 +16,11 @@
 // decaying profile (methods/boundary_lift.hpp).
 #include <Eigen/Geometry>
 #include <cmath>
-#include <sstream>
 
 #include "common/errors.hpp"
 #include "scene/chain_conditions.hpp"
 #include "scene/expression_fields.hpp"
+#include "scene/fill_corners.hpp"
 #include "scene/loop_sheet.hpp"
 #include "scene/patch_graph.hpp"
 #include "scene/solved_edges.hpp"
@@ -29,83 +29,9 @@ namespace pdesurf {
 
 namespace {
 
-constexpr int kPerSide = 96;          // samples per border for the loop's figures
 constexpr double kCloseTolerance = 1e-8;  // of the loop's size: a gap beyond this is refused
-constexpr double kInside = 1e-9;          // of a side's length: where its corner values are taken
 
 [[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
-
-std::string number(double x) {
-  std::ostringstream o;
-  o.precision(4);
-  o << x;
-  return o.str();
-}
-
-Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
-  const double vars[2] = {v, 0.0};
-  return {evaluate(*e[0], vars), evaluate(*e[1], vars), evaluate(*e[2], vars)};
-}
-
-struct Side {
-  Vec3Expr X, D;   // in the fill's v
-  Vec3Expr T;      // the edge's tangent along its own parameter (times the part's length): never 0
-  // Curvature only: the source's second derivatives along (ss), along and across (sw) and
-  // across (ww) its edge, in the parameters of T and D.
-  Vec3Expr Xss, Xsw, Xww;
-  Expr sigma;      // the side's parameter 0..1 as a function of v (see sideOf)
-  double v0 = 0, v1 = 0;
-  std::string name;  // "'rear' u0", for messages
-  std::vector<Eigen::Vector3d> x, d, t, dd;  // samples at kPerSide + 1 evenly spaced v (ends included)
-};
-
-// depth: the derivatives across the loop the fill takes from its borders (0 position, 1
-// tangency, 2 curvature).
-Side sideOf(const Patch& fill, size_t k, const SolvedLookup& solved, int depth) {
-  const bool tangency = depth >= 1;
-  const LoopBorder& b = fill.fill.borders[k];
-  const size_t n = fill.fill.borders.size();
-  const SolvedPatch& source = solved(b.patch);
-  EdgeExprs e = solvedEdge(source, b.edge, depth);
-  Side s;
-  const auto part = fillSideRange(k, n);
-  s.v0 = part[0], s.v1 = part[1];
-  s.name = "'" + b.patch + "' " + edgeName(*source.patch, b.edge);
-  // The edge's parameter runs from `from` to `to` (or back) as σ runs 0..1, with w = (v - v0) /
-  // (v1 - v0) and σ = w - sin(2πw) / 2π, whose speed vanishes at both ends: at the loop's
-  // corners, where the sides' tangents and cross derivatives turn, the loop's position and
-  // cross derivative are then C1 in v (both one-sided v-derivatives are 0), so the fill's
-  // series does not ring there. A single closed border has no corner: σ = w.
-  const double a = b.reverse ? b.to : b.from, span = (b.reverse ? b.from : b.to) - a;
-  const Expr w = divide(subtract(variable(ExprVar::V), constant(s.v0)), constant(s.v1 - s.v0));
-  s.sigma = n == 1 ? w : subtract(w, multiply(constant(kFillEase / (2 * M_PI)), call(ExprFn::Sin, multiply(constant(2 * M_PI), w))));
-  const Expr param = add(constant(a), multiply(constant(span), s.sigma));
-  for (int c = 0; c < 3; ++c) {
-    s.X[c] = substitute(e.X[c], ExprVar::V, param);
-    s.D[c] = tangency ? substitute(e.out[c], ExprVar::V, param) : constant(0.0);
-    s.T[c] = tangency ? multiply(constant(span), substitute(derivative(e.X[c], ExprVar::V), ExprVar::V, param)) : constant(0.0);
-    if (depth < 2) continue;
-    s.Xss[c] = multiply(constant(span * span), substitute(derivative(derivative(e.X[c], ExprVar::V), ExprVar::V), ExprVar::V, param));
-    s.Xsw[c] = multiply(constant(span), substitute(derivative(e.out[c], ExprVar::V), ExprVar::V, param));
-    s.Xww[c] = substitute(e.outOut[c], ExprVar::V, param);
-  }
-  for (int i = 0; i <= kPerSide; ++i) {
-    const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
-    s.x.push_back(eval3(s.X, v));
-    s.d.push_back(eval3(s.D, v));
-    bool finite = s.x.back().allFinite() && s.d.back().allFinite();
-    if (depth >= 1) {
-      s.t.push_back(eval3(s.T, v));
-      finite = finite && s.t.back().allFinite();
-    }
-    if (depth >= 2) {
-      s.dd.push_back(eval3(s.Xww, v));
-      finite = finite && s.dd.back().allFinite() && eval3(s.Xss, v).allFinite() && eval3(s.Xsw, v).allFinite();
-    }
-    if (!finite) fail(ErrorCode::NonFinite, b.path, s.name + " is not finite at v = " + number(v));
-  }
-  return s;
-}
 
 // 1 on [v0, v1], ½ at a corner; from = -inf: everything below v1 too, to = inf: above v0.
 Expr indicator(double v0, double v1) {
@@ -123,12 +49,12 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   const bool tangency = depth >= 1, curvature = depth >= 2;
   const size_t n = loop.borders.size();
   out.periodicV = true;  // one loop: the fill closes on itself across v = 0 (corner or not)
-  std::vector<Side> sides;
-  for (size_t k = 0; k < n; ++k) sides.push_back(sideOf(fill, k, solved, depth));
+  std::vector<FillSide> sides;
+  for (size_t k = 0; k < n; ++k) sides.push_back(fillSideOf(fill, k, solved, depth));
 
   // The loop's size, centroid and mean radius, over evenly spaced v.
   Eigen::Vector3d lo = sides[0].x[0], hi = lo, centroid = Eigen::Vector3d::Zero(), area = Eigen::Vector3d::Zero();
-  for (const Side& s : sides)
+  for (const FillSide& s : sides)
     for (size_t i = 0; i < s.x.size(); ++i) {
       lo = lo.cwiseMin(s.x[i]), hi = hi.cwiseMax(s.x[i]);
       if (i < s.x.size() - 1) centroid += s.x[i], area += s.x[i].cross(s.x[i + 1]) / 2;
@@ -137,12 +63,12 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   centroid /= static_cast<double>(n * kPerSide);
   // Every side must end where the next starts (the last where the first starts).
   for (size_t k = 0; k < n; ++k) {
-    const Side& s = sides[k];
-    const Side& next = sides[(k + 1) % n];
+    const FillSide& s = sides[k];
+    const FillSide& next = sides[(k + 1) % n];
     const double gap = (s.x.back() - next.x.front()).norm();
     if (!(gap <= kCloseTolerance * size))
       fail(ErrorCode::InvalidField, loop.borders[(k + 1) % n].path,
-           "the loop does not close: " + s.name + " ends " + number(gap) + " (scene units) from where " + next.name + " starts" +
+           "the loop does not close: " + s.name + " ends " + shortNumber(gap) + " (scene units) from where " + next.name + " starts" +
                (n == 1 ? " (a single border must be a closed curve)" : ""));
   }
   if (!(size > 0)) fail(ErrorCode::InvalidField, loop.path + ".borders", "the loop is a single point");
@@ -152,13 +78,13 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   std::vector<Eigen::Vector3d> corner(n);
   for (size_t k = 0; k < n; ++k) corner[k] = (sides[(k + n - 1) % n].x.back() + sides[k].x.front()) / 2;
   for (size_t k = 0; k < n; ++k) {
-    Side& s = sides[k];
+    FillSide& s = sides[k];
     const Eigen::Vector3d c0 = corner[k] - s.x.front(), c1 = corner[(k + 1) % n] - s.x.back();
     for (int c = 0; c < 3; ++c)
       if (c0[c] != 0 || c1[c] != 0) s.X[c] = add(s.X[c], add(constant(c0[c]), multiply(constant(c1[c] - c0[c]), s.sigma)));
   }
   double radius = 0.0;
-  for (const Side& s : sides)
+  for (const FillSide& s : sides)
     for (int i = 0; i < kPerSide; ++i) radius += (s.x[i] - centroid).norm();
   radius /= static_cast<double>(n * kPerSide);
 
@@ -199,7 +125,7 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   // The centre's spokes: the first harmonic of the loop projected on the tangent plane (the
   // sheet's, when fitted: the plane's, lifted by its slopes).
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
-  for (const Side& s : sides)
+  for (const FillSide& s : sides)
     for (int i = 0; i < kPerSide; ++i) {
       const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
       Eigen::Vector3d p = s.x[i] - centre;
@@ -215,95 +141,18 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     fail(ErrorCode::InvalidField, loop.path + ".borders",
          "the loop does not turn around the centre's normal (seen along it, it is flat or folded): the centre cannot be regular");
 
-  // At each corner the two sides' cross derivatives differ (by up to the corner's angle): left
-  // so, the fill's iso-u curves would turn back on themselves there and fold. Adding a part of
-  // the side's own tangent T keeps the tangent plane (G1 is untouched) and lets both sides
-  // leave the corner along one vector W: along side k, X_u = γ k_k D_k + α T_k, with (γ, α)
-  // linear in σ between the values that give W at its two corners (1, 0 where no W fits).
-  std::vector<std::array<double, 4>> mix(n, {1.0, 0.0, 1.0, 0.0});  // γ, α at v0; γ, α at v1
-  const auto fit = [](const Eigen::Vector3d& D, const Eigen::Vector3d& T, const Eigen::Vector3d& W, double* gamma, double* alpha) {
-    Eigen::Matrix2d A;
-    A << D.dot(D), D.dot(T), D.dot(T), T.dot(T);
-    const Eigen::Vector2d x = A.fullPivLu().solve(Eigen::Vector2d(D.dot(W), T.dot(W)));
-    if (!(x.allFinite() && x(0) > 0.2 && x(0) < 5 && (x(0) * D + x(1) * T - W).norm() <= 1e-6 * W.norm())) return;
-    *gamma = x(0), *alpha = x(1);
-  };
-  for (size_t k = 0; k < n && tangency; ++k) {
-    const Side &s = sides[k], &next = sides[(k + 1) % n];
-    // One-sided, just inside each side: a border may have a kink exactly at the corner, where
-    // its expression's derivative is the mean of the two sides'.
-    const double ve = s.v1 - kInside * (s.v1 - s.v0), vs = next.v0 + kInside * (next.v1 - next.v0);
-    const Eigen::Vector3d De = scale[k] * eval3(s.D, ve), Ds = scale[(k + 1) % n] * eval3(next.D, vs);
-    const Eigen::Vector3d Te = eval3(s.T, ve), Ts = eval3(next.T, vs);
-    // First choice: W where the two sides' lines De + αTe and Ds + βTs cross, so each side keeps
-    // its own cross derivative (γ = 1): a corner of any angle short of straight.
-    Eigen::Matrix<double, 3, 2> A;
-    A << Te, -Ts;
-    const Eigen::Vector2d ab = A.colPivHouseholderQr().solve(Ds - De);
-    const Eigen::Vector3d W = De + ab(0) * Te;
-    const double longest = 4 * std::max(De.norm(), Ds.norm());
-    if (ab.allFinite() && (A * ab - (Ds - De)).norm() <= 1e-6 * longest && W.norm() <= longest) {
-      mix[k][3] = ab(0), mix[(k + 1) % n][1] = ab(1);
-      continue;
-    }
-    // Else the mean of the two, reached with γ != 1 where it can be.
-    const Eigen::Vector3d mean = (De + Ds) / 2;
-    if (!(mean.norm() > 0.05 * std::max(De.norm(), Ds.norm()))) continue;  // the sides leave in opposite directions
-    fit(De, Te, mean, &mix[k][2], &mix[k][3]);
-    fit(Ds, Ts, mean, &mix[(k + 1) % n][0], &mix[(k + 1) % n][1]);
-  }
+  const std::vector<SideMix> mix = tangency ? cornerDirections(sides, scale) : std::vector<SideMix>(n, {1.0, 0.0, 1.0, 0.0});
   // From a at the side's start to b at its end, in σ (so its v-derivative too is 0 at corners).
   const auto linear = [](double a, double b, const Expr& sigma) { return add(constant(a), multiply(constant(b - a), sigma)); };
 
-  // Curvature: X_uu along side k continues its border's surface S in the direction the fill
-  // leaves it, X ≈ S(s + αu, βu) with β = γ k_k: X_uu = α² S_ss + 2αβ S_sw + β² S_ww, whose
-  // normal part is S's second fundamental form in that direction (G2 by construction). At a
-  // corner the two sides must agree on it; a tangential part (δ_T T + δ_D D, linear in σ) lets
-  // them meet at their mean without touching the normal part.
-  std::vector<std::array<double, 4>> tangential(n, {0.0, 0.0, 0.0, 0.0});  // δ_T, δ_D at v0; at v1
-  const auto secondAt = [&](size_t k, double v, double sigma) {
-    const Side& s = sides[k];
-    const auto& m = mix[k];
-    const double alpha = m[1] + (m[3] - m[1]) * sigma, beta = (m[0] + (m[2] - m[0]) * sigma) * scale[k];
-    return Eigen::Vector3d(alpha * alpha * eval3(s.Xss, v) + 2 * alpha * beta * eval3(s.Xsw, v) + beta * beta * eval3(s.Xww, v));
-  };
-  for (size_t k = 0; k < n && curvature && n > 1; ++k) {
-    const size_t j = (k + 1) % n;
-    const Side &s = sides[k], &next = sides[j];
-    const double ve = s.v1 - kInside * (s.v1 - s.v0), vs = next.v0 + kInside * (next.v1 - next.v0);
-    const Eigen::Vector3d De = eval3(s.D, ve), Ds = eval3(next.D, vs), Te = eval3(s.T, ve), Ts = eval3(next.T, vs);
-    const Eigen::Vector3d We = mix[k][2] * scale[k] * De + mix[k][3] * Te, Ws = mix[j][0] * scale[j] * Ds + mix[j][1] * Ts;
-    const std::string corner = "the corner where " + s.name + " meets " + next.name;
-    if (!((We - Ws).norm() <= 1e-6 * std::max(We.norm(), Ws.norm())))
-      fail(ErrorCode::InvalidField, loop.borders[j].path,
-           "a curvature fill cannot be G2 at " + corner + ": the two sides cannot leave it along one direction; fill it with tangency");
-    const Eigen::Vector3d Ne = Te.cross(De).normalized(), Ns = Ts.cross(Ds).normalized();
-    const Eigen::Vector3d Qe = secondAt(k, ve, 1.0), Qs = secondAt(j, vs, 0.0);
-    const double planes = std::atan2(Ne.cross(Ns).norm(), std::abs(Ne.dot(Ns))) * 180 / M_PI;
-    const double ke = Qe.dot(Ne) / We.squaredNorm(), ks = Qs.dot(Ne.dot(Ns) < 0 ? Eigen::Vector3d(-Ns) : Ns) / Ws.squaredNorm();
-    const double room = 1e-6 * std::max({std::abs(ke), std::abs(ks), 1.0 / radius});
-    if (!(planes <= 1e-6) || !(std::abs(ke - ks) <= room))
-      fail(ErrorCode::InvalidField, loop.borders[j].path,
-           "a curvature fill cannot be G2 at " + corner + ": " +
-               (planes > 1e-6 ? "the two surfaces' tangent planes differ there by " + number(planes) + "°"
-                              : "the two surfaces bend differently there (normal curvature " + number(ke) + " against " + number(ks) + " along the fill's direction)") +
-               "; fill it with tangency, or make the surfaces meet G2 at that corner");
-    const Eigen::Vector3d M = (Qe + Qs) / 2;
-    const auto inPlane = [](const Eigen::Vector3d& T, const Eigen::Vector3d& D, const Eigen::Vector3d& d) {
-      Eigen::Matrix<double, 3, 2> A;
-      A << T, D;
-      return Eigen::Vector2d(A.colPivHouseholderQr().solve(d));
-    };
-    const Eigen::Vector2d de = inPlane(Te, De, M - Qe), ds = inPlane(Ts, Ds, M - Qs);
-    tangential[k][2] = de(0), tangential[k][3] = de(1), tangential[j][0] = ds(0), tangential[j][1] = ds(1);
-  }
+  const std::vector<SideMix> tangential = curvature ? curvatureCorners(loop, sides, scale, mix, radius) : std::vector<SideMix>(n, {0.0, 0.0, 0.0, 0.0});
   // The centre: an umbilic of the loop's mean normal curvature across its borders, so the fill
   // leaves C as X ≈ C + r p(v) + ½ r² κ |p(v)|² n (r = 1 - u, p(v) = a cos v + b sin v): a
   // function of r cos v, r sin v only (harmonics 0 and 2), a regular point.
   double kappa = 0.0;
   for (size_t k = 0; k < n && curvature; ++k)
     for (int i = 0; i < kPerSide; ++i) {
-      const Side& s = sides[k];
+      const FillSide& s = sides[k];
       Eigen::Vector3d N = s.t[i].cross(s.d[i]).normalized();
       if (N.dot(normal) < 0) N = -N;
       kappa += s.dd[i].dot(N) / s.d[i].squaredNorm();
@@ -338,7 +187,7 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     Expr x, d, dd;
     const auto place = [](Expr& sum, const Expr& chi, const Expr& e) { sum = sum ? add(sum, multiply(chi, e)) : multiply(chi, e); };
     for (size_t k = 0; k < n; ++k) {
-      const Side& s = sides[k];
+      const FillSide& s = sides[k];
       Expr dk, ddk;
       if (tangency) {
         const auto& m = mix[k];
