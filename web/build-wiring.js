@@ -90,10 +90,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   function makeFill(borders, options = {}) {
     const list = viewer.borders.list();
     const endpoints = borders.map((b) => list.find((d) => d.patch === b.surface && d.border === b.at)?.endpoints);
-    const add = options.kind === 'pde' ? addLoopFill : addFill;
     const r = build('fill', (s) => {
       if (endpoints.some((e) => !e)) throw new Error('a border that is not drawn yet cannot be filled: wait for the solve');
-      return add(s.scene, borders, endpoints);
+      return options.kind === 'pde' ? addLoopFill(s.scene, borders, endpoints, { continuity: options.continuity }) : addFill(s.scene, borders, endpoints);
     }, { checked: true, said: (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}` });
     folder.clearChoices();
     viewer.borders.highlight([]);
@@ -114,9 +113,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
         const chosen = folder.picked(pickMode, border);
         viewer.borders.highlight(chosen.map((c) => ({ patch: c.surface, border: c.at })));
         if (pickMode === 'blend' && chosen.length === 2) makeBlend(chosen[0], chosen[1], folder.blendOptions());
-        // A Bézier fill is made at the fourth pick; a PDE fill at the sixth, or by its button.
-        const kind = folder.fillKind();
-        if (pickMode === 'fill' && chosen.length === (kind === 'pde' ? 6 : 4)) makeFill(chosen, { kind });
+        // A Bézier fill is made at the fourth pick; a PDE fill at the eighth, or by its button.
+        const options = folder.fillOptions();
+        if (pickMode === 'fill' && chosen.length === (options.kind === 'pde' ? 8 : 4)) makeFill(chosen, options);
       },
     });
   }

@@ -64,7 +64,7 @@ describe('models of many patches', { skip }, () => {
     await page.close();
   });
 
-  it('a PDE fill of four strips made from the Build folder meets every strip G1', async () => {
+  it('a PDE fill of four strips made from the Build folder meets every strip G2, its seam too', async () => {
     const strip = (k) => ({ name: `strip${k}`, kind: 'surface', t_range: [1, 2], v_range: [-1, 1],
       x: 't', y: 'v', z: 'c*(t^2 + v^2)', ...(k ? { placement: { rotate: [0, 0, 90 * k] } } : {}) });
     const scene = { format: 'pdesurf-scene', version: 4, title: 'four strips',
@@ -73,8 +73,9 @@ describe('models of many patches', { skip }, () => {
     assert.equal((await hooks(page)).lastError, null);
     await page.locator('#panel .build-folder .title', { hasText: 'Fill a loop' }).click();
     const control = (key) => page.locator(`#panel [data-build="${key}"]`);
-    await control('fill-kind').locator('select').selectOption({ label: 'PDE (1–6 borders)' });
-    assert.equal(await page.locator('#panel [data-build^="fill-"] select').count(), 7, 'the kind and six border choices');
+    await control('fill-kind').locator('select').selectOption({ label: 'PDE (1–8 borders)' });
+    assert.equal(await page.locator('#panel [data-build^="fill-"] select').count(), 10, 'the kind, the continuity and eight border choices');
+    await control('fill-continuity').locator('select').selectOption({ label: 'curvature (G2)' });
     for (const k of [0, 2, 1, 3]) await control(`fill-${[0, 2, 1, 3].indexOf(k)}`).locator('select').selectOption({ label: `strip${k} · t0` });
     const n = (await hooks(page)).solveCount;
     await page.locator('#panel .build-folder button', { hasText: 'fill the loop' }).click();
@@ -83,12 +84,17 @@ describe('models of many patches', { skip }, () => {
     const built = JSON.parse(await page.evaluate(() => window.__pdesurf.sceneText()));
     const fill = built.patches.find((p) => p.kind === 'fill');
     assert.equal(fill.borders.length, 4);
+    assert.equal(fill.continuity, 'curvature');
     await openFolder(page, 'joins');
     await page.waitForFunction(() => window.__pdesurf.analysis().report?.centres?.length === 1);
     const r = await report(page);
     assert.equal(r.joins.filter((j) => j.patch === fill.name).length, 4);
-    assert.ok(r.joins.every((j) => j.ok && j.level === 'G1'), JSON.stringify(r.joins));
+    assert.ok(r.joins.every((j) => j.ok && j.level === 'G2'), JSON.stringify(r.joins));
     assert.ok(r.centres[0].ok);
+    // The fill closes on itself: its seam is certified G2 and listed in the Joins folder.
+    const seam = r.seams.find((j) => j.patch === fill.name);
+    assert.ok(seam && seam.ok && seam.level === 'G2', JSON.stringify(r.seams));
+    assert.equal(await page.locator(`#panel .joins-seam[data-seam="${fill.name}"]`).getAttribute('data-verdict'), 'ok');
     await shoot(page, 'models-fill-1280.png');
     await page.close();
   });

@@ -220,14 +220,14 @@ export function addFill(scene, borders, endpoints, options = {}) {
  * borders ({ surface, at: 't0' | 't1' }, in any order; one border must be a closed curve),
  * G1 to each with a regular centre. endpoints[k] = [start, end] as for addFill; the loop's
  * order and each border's direction are found from them. options: { continuity: 'tangency'
- * (or 'position'), tolerance, name }. Returns the fill's name.
+ * (or 'position', 'curvature'), tolerance, name }. Returns the fill's name.
  */
 export function addLoopFill(scene, borders, endpoints, options = {}) {
   if (!Array.isArray(borders) || borders.length < 1 || borders.length > 8) throw new Error('borders: expected 1 to 8 borders');
   if (!Array.isArray(endpoints) || endpoints.length !== borders.length) throw new Error('endpoints: expected the two ends of each border');
   checkPicks(scene, borders, endpoints);
   const continuity = options.continuity ?? 'tangency';
-  if (continuity !== 'tangency' && continuity !== 'position') throw new Error(`continuity: must be "tangency" or "position", not ${JSON.stringify(continuity)}`);
+  if (!CONTINUITIES.includes(continuity)) throw new Error(`continuity: must be ${CONTINUITIES.join(', ')}, not ${JSON.stringify(continuity)}`);
   const tol = options.tolerance ?? 1e-3 * loopSize(endpoints);
   endpoints.forEach(([p, q], k) => {
     const closed = dist(p, q) <= tol;

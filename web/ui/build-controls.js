@@ -21,7 +21,7 @@ const borderLabel = (b) => `${b.surface} · ${b.at}`;
 const asOptions = (labels) => Object.fromEntries(labels.map((l) => [escapeHtml(l), l]));
 
 /**
- * handlers: { onNew(), onAdd(kindId, options?), onBlend(a, b, options), onFill(borders, { kind: 'bezier' | 'pde' }),
+ * handlers: { onNew(), onAdd(kindId, options?), onBlend(a, b, options), onFill(borders, { kind: 'bezier' | 'pde', continuity }),
  *   onPickMode(kind: 'blend' | 'fill' | null) }; borders are { surface, at }.
  */
 export function buildBuildFolder(gui, handlers) {
@@ -54,9 +54,9 @@ export function buildBuildFolder(gui, handlers) {
   const draft = { a: NONE, b: NONE, continuity: 'tangency', power: 1, pick: false };
   // The fill's kind: a Bézier patch (four borders, seed 002) or a PDE fill (1 to 8 borders,
   // G1 to each, a regular centre; docs/chains-and-fills.md).
-  const FILL_KINDS = { 'Bézier (4 borders)': 'bezier', 'PDE (1–6 borders)': 'pde' };
-  const SLOTS = ['b0', 'b1', 'b2', 'b3', 'b4', 'b5'];
-  const fillDraft = { kind: 'bezier', b0: NONE, b1: NONE, b2: NONE, b3: NONE, b4: NONE, b5: NONE, pick: false };
+  const FILL_KINDS = { 'Bézier (4 borders)': 'bezier', 'PDE (1–8 borders)': 'pde' };
+  const SLOTS = ['b0', 'b1', 'b2', 'b3', 'b4', 'b5', 'b6', 'b7'];
+  const fillDraft = { kind: 'bezier', continuity: 'tangency', pick: false, ...Object.fromEntries(SLOTS.map((k) => [k, NONE])) };
   const slotsOf = () => (fillDraft.kind === 'pde' ? SLOTS : SLOTS.slice(0, 4));
   let choices = [NONE];
   let byLabel = new Map();
@@ -77,6 +77,8 @@ export function buildBuildFolder(gui, handlers) {
     blend.add({ make: () => makeBlend() }, 'make').name('make the blend').domElement.dataset.build = 'blend-make';
     fill = folder.addFolder('Fill a loop of borders');
     fill.add(fillDraft, 'kind', FILL_KINDS).name('fill').onChange(() => buildChoices()).domElement.dataset.build = 'fill-kind';
+    // A PDE fill meets its borders with tangency (G1) or curvature (G2); position (G0) too.
+    if (fillDraft.kind === 'pde') fill.add(fillDraft, 'continuity', CONTINUITIES).name('continuity').domElement.dataset.build = 'fill-continuity';
     slotsOf().forEach((k, i) => {
       fill.add(fillDraft, k, asOptions(choices)).name(`border ${i + 1}`).domElement.dataset.build = `fill-${i}`;
     });
@@ -113,7 +115,7 @@ export function buildBuildFolder(gui, handlers) {
     if (fillDraft.kind === 'pde') {
       const borders = SLOTS.map((k) => chosen(fillDraft[k])).filter(Boolean);
       if (!borders.length) return say('choose the borders around the hole, 1 to 8 (or pick them in the view)', true);
-      return handlers.onFill(borders, { kind: 'pde' });
+      return handlers.onFill(borders, { kind: 'pde', continuity: fillDraft.continuity });
     }
     const borders = SLOTS.slice(0, 4).map((k) => chosen(fillDraft[k]));
     if (borders.some((b) => !b)) return say('choose the four borders around the hole (or pick them in the view)', true);
@@ -161,6 +163,7 @@ export function buildBuildFolder(gui, handlers) {
     blendOptions: () => ({ continuity: draft.continuity, power: draft.power }),
     /** The fill's kind and how many borders it takes before a pick makes it ('pde': 6, or the button). */
     fillKind: () => fillDraft.kind,
+    fillOptions: () => ({ kind: fillDraft.kind, continuity: fillDraft.continuity }),
     /** After a blend or a fill was made (or refused): the choices start again. */
     clearChoices() {
       draft.a = draft.b = NONE;
