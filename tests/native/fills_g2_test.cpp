@@ -5,60 +5,18 @@
 #include <doctest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "scene/scene.hpp"
+#include "random_holes.hpp"
 #include "test_util.hpp"
 
 using namespace pdesurf;
 using namespace pdesurf::testing;
 using json = nlohmann::json;
-
-namespace {
-
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "(%.17g)", x);
-  return buf;
-}
-
-struct Sheet {
-  double a, b, c, d;  // z = a x² + b y² + c x y + d x³
-  std::string z(const std::string& X, const std::string& Y) const {
-    return num(a) + "*(" + X + ")^2 + " + num(b) + "*(" + Y + ")^2 + " + num(c) + "*(" + X + ")*(" + Y + ") + " + num(d) + "*(" + X + ")^3";
-  }
-  double at(double x, double y) const { return a * x * x + b * y * y + c * x * y + d * x * x * x; }
-};
-
-// An irregular convex N-gon hole in the sheet, ringed by strips of it (strip k's t0 is side
-// k); `other` (if given) makes strip `odd` a strip of another sheet that meets this one G1
-// along the strip's own side only where they agree.
-json hole(int n, const Sheet& sheet, std::mt19937& rng, const std::string& continuity) {
-  std::uniform_real_distribution<double> jitter(-0.5, 0.5);
-  const double turn = 2 * M_PI * (jitter(rng) + 0.5);
-  std::vector<double> angle(n), radius(n);
-  for (int k = 0; k < n; ++k) angle[k] = turn + 2 * M_PI * (k + 0.4 * jitter(rng)) / n, radius[k] = 1 + 0.15 * jitter(rng);
-  json patches = json::array(), borders = json::array();
-  for (int k = 0; k < n; ++k) {
-    const int m = (k + 1) % n;
-    const double x0 = radius[k] * std::cos(angle[k]), y0 = radius[k] * std::sin(angle[k]);
-    const double x1 = radius[m] * std::cos(angle[m]), y1 = radius[m] * std::sin(angle[m]);
-    const double ex = x1 - x0, ey = y1 - y0, l = std::hypot(ex, ey);
-    const std::string X = num(x0) + " + " + num(ex) + "*v + " + num(0.5 * ey / l) + "*t";
-    const std::string Y = num(y0) + " + " + num(ey) + "*v + " + num(-0.5 * ex / l) + "*t";
-    const std::string name = "strip" + std::to_string(k);
-    patches.push_back({{"name", name}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, 1}}, {"x", X}, {"y", Y}, {"z", sheet.z(X, Y)}});
-    borders.push_back({{"patch", name}, {"at", "t0"}});
-  }
-  patches.push_back({{"name", "fill"}, {"kind", "fill"}, {"borders", borders}, {"continuity", continuity}});
-  return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}};
-}
-
-}  // namespace
 
 TEST_CASE("curvature fills of random convex holes in smooth sheets meet every side G2, close G2 on their seam, and follow the sheet") {
   std::mt19937 rng(352);
@@ -76,7 +34,7 @@ TEST_CASE("curvature fills of random convex holes in smooth sheets meet every si
     CAPTURE(sheet.b);
     CAPTURE(sheet.c);
     CAPTURE(sheet.d);
-    const Scene scene = parseScene(hole(n, sheet, rng, "curvature").dump());
+    const Scene scene = parseScene(randomHole(n, sheet, rng, 0.4, "curvature").dump());
     const auto solved = solveScene(scene);
     const SceneReport r = checkScene(scene, solved, 32);
     REQUIRE(r.joins.size() == static_cast<size_t>(n));
@@ -112,7 +70,7 @@ TEST_CASE("curvature fills of random convex holes in smooth sheets meet every si
 
 TEST_CASE("a curvature fill where two sides bend differently at a corner is refused, naming the corner") {
   std::mt19937 rng(7);
-  json s = hole(4, Sheet{0.2, -0.1, 0.05, 0.0}, rng, "curvature");
+  json s = randomHole(4, Sheet{0.2, -0.1, 0.05, 0.0}, rng, 0.4, "curvature");
   // Strip 1 bent more across itself: still G1 to strip 0 and strip 2 along the loop's corners
   // (same point and tangent plane there), but not G2.
   std::string z = s["patches"][1]["z"];

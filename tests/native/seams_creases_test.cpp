@@ -4,13 +4,13 @@
 #include <doctest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "scene/scene.hpp"
+#include "random_holes.hpp"
 #include "test_util.hpp"
 
 using namespace pdesurf;
@@ -18,36 +18,6 @@ using namespace pdesurf::testing;
 using json = nlohmann::json;
 
 namespace {
-
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "(%.17g)", x);
-  return buf;
-}
-
-// An irregular convex N-gon hole (corners at uneven angles and radii) in the sheet
-// z = a x² + b y² + c x y + d x³, ringed by strips of the sheet: strip k's t0 is side k.
-json irregularHole(int n, double a, double b, double c, double d, std::mt19937& rng) {
-  std::uniform_real_distribution<double> jitter(-0.5, 0.5);
-  std::vector<double> angle(n), radius(n);
-  const double turn = 2 * M_PI * (jitter(rng) + 0.5);
-  for (int k = 0; k < n; ++k) angle[k] = turn + 2 * M_PI * (k + 0.5 * jitter(rng)) / n, radius[k] = 1 + 0.15 * jitter(rng);
-  json patches = json::array(), borders = json::array();
-  for (int k = 0; k < n; ++k) {
-    const int m = (k + 1) % n;
-    const double x0 = radius[k] * std::cos(angle[k]), y0 = radius[k] * std::sin(angle[k]);
-    const double x1 = radius[m] * std::cos(angle[m]), y1 = radius[m] * std::sin(angle[m]);
-    const double ex = x1 - x0, ey = y1 - y0, l = std::hypot(ex, ey);
-    const std::string X = num(x0) + " + " + num(ex) + "*v + " + num(0.5 * ey / l) + "*t";
-    const std::string Y = num(y0) + " + " + num(ey) + "*v + " + num(-0.5 * ex / l) + "*t";
-    const std::string Z = num(a) + "*(" + X + ")^2 + " + num(b) + "*(" + Y + ")^2 + " + num(c) + "*(" + X + ")*(" + Y + ") + " + num(d) + "*(" + X + ")^3";
-    const std::string name = "strip" + std::to_string(k);
-    patches.push_back({{"name", name}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, 1}}, {"x", X}, {"y", Y}, {"z", Z}});
-    borders.push_back({{"patch", name}, {"at", "t0"}});
-  }
-  patches.push_back({{"name", "fill"}, {"kind", "fill"}, {"borders", borders}});
-  return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}};
-}
 
 const JoinResult& seamOf(const SceneReport& r, const std::string& patch) {
   for (const JoinResult& s : r.seams)
@@ -107,7 +77,7 @@ TEST_CASE("fills of random irregular convex holes, N = 3..8: closed seams, creas
     CAPTURE(b);
     CAPTURE(c);
     CAPTURE(d);
-    const Scene scene = parseScene(irregularHole(n, a, b, c, d, rng).dump());
+    const Scene scene = parseScene(randomHole(n, Sheet{a, b, c, d}, rng, 0.5).dump());
     const auto solved = solveScene(scene);
     const SceneReport r = checkScene(scene, solved, 0);
     const JoinResult& seam = seamOf(r, "fill");

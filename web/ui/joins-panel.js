@@ -4,7 +4,8 @@
 // surface (failing joins start ticked). Built with createElement/textContent only:
 // patch and surface names from a scene or a link are shown literally.
 // DOM hooks: [data-folder="joins"], .joins-summary, [data-join="<patch>:<side>:<met>:<edge>"] with
-// data-verdict="ok" | "fail", its checkbox input, .joins-crossing, .joins-message.
+// data-verdict="ok" | "fail", its checkbox input, .joins-seam[data-seam] and .joins-centre[data-centre] with
+// data-verdict, .joins-crossing, .joins-message.
 import { joinFigures, crossingText, joinKey, centreText, seamText } from '../state/join-report.js';
 
 function el(tag, className, text) {
@@ -84,26 +85,20 @@ export function buildJoinsFolder(gui, onToggle, onOpen) {
       const list = el('ul', 'joins-list');
       for (const j of report.joins) list.append(entry(j, ticked.has(joinKey(j))));
       body.append(list);
-      if (report.seams?.length) {
-        const sl = el('ul', 'joins-seams');
-        for (const j of report.seams) {
-          const li = el('li', `joins-seam ${j.ok ? 'ok' : 'fail'}`, seamText(j));
-          li.dataset.seam = j.patch;
-          li.dataset.verdict = j.ok ? 'ok' : 'fail';
-          sl.append(li);
+      // One line per seam and per fill's centre, with its verdict.
+      const verdicts = (className, items, textOf, key) => {
+        if (!items?.length) return;
+        const ul = el('ul', `${className}s`);
+        for (const item of items) {
+          const li = el('li', `${className} ${item.ok ? 'ok' : 'fail'}`, textOf(item));
+          li.dataset[key] = item.patch;
+          li.dataset.verdict = item.ok ? 'ok' : 'fail';
+          ul.append(li);
         }
-        body.append(sl);
-      }
-      if (report.centres?.length) {
-        const cl = el('ul', 'joins-centres');
-        for (const c of report.centres) {
-          const li = el('li', `joins-centre ${c.ok ? 'ok' : 'fail'}`, centreText(c));
-          li.dataset.centre = c.patch;
-          li.dataset.verdict = c.ok ? 'ok' : 'fail';
-          cl.append(li);
-        }
-        body.append(cl);
-      }
+        body.append(ul);
+      };
+      verdicts('joins-seam', report.seams, seamText, 'seam');
+      verdicts('joins-centre', report.centres, centreText, 'centre');
       if (report.crossings.length) {
         const cl = el('ul', 'joins-crossings');
         for (const c of report.crossings) cl.append(el('li', 'joins-crossing', crossingText(c)));
