@@ -12,7 +12,7 @@ import { PdesurfError } from '../../web/solver/pdesurf-solver.js';
 import { loadTestSolver } from './test-solver.mjs';
 import { upstreamOf } from '../../web/ui/outliner.js';
 import { dependentsOf, downstreamOf, deletePatch } from '../../web/state/patch-delete.js';
-import { normaliseReport, joinKey, centreText } from '../../web/state/join-report.js';
+import { normaliseReport, joinKey, centreText, seamText } from '../../web/state/join-report.js';
 
 const root = new URL('../../', import.meta.url);
 const solver = await loadTestSolver();
@@ -94,6 +94,15 @@ test('the outliner shows the chain; deleting a patch takes what is downstream of
   // What is left still solves and certifies.
   const { report } = solver.solve(scene, { nu: 8, nv: 8, joins: true });
   assert.ok(report.joins.every((j) => j.ok));
+});
+
+test('a seam shows as text, whatever the patch is called; a report without seams has none', () => {
+  const seam = { patch: '<i>s</i>', end: 'v1', surface: '<i>s</i>', edge: 'v0', level: 'G0', g0: 4.47e-17, g1_deg: 17, g2_rel: null, fold: false, degenerate: 0, worstV: 0.5, ok: true };
+  const r = normaliseReport({ ok: true, sceneSize: 1, joins: [], seams: [seam], crossings: [], centres: [] });
+  assert.equal(r.seams.length, 1);
+  assert.equal(seamText(r.seams[0]), '“<i>s</i>” seam v0 = v1 (sharp in its data): G0, gap 4.5e-17, angle 17°: ok');
+  assert.equal(seamText({ ...r.seams[0], level: 'G2', g1Deg: null, ok: false }), '“<i>s</i>” seam v0 = v1: G2, gap 4.5e-17, angle —: FAILS');
+  assert.deepEqual(normaliseReport({ ok: true, sceneSize: 1, joins: [], crossings: [] }).seams, []);
 });
 
 test('a centre shows as text, whatever the patch is called', () => {

@@ -66,9 +66,8 @@ export const joinKey = (j) => `${j.patch}\u0000${j.end}\u0000${j.surface}\u0000$
 /** A closed patch's seam as one line of text (no markup). */
 export function seamText(j) {
   const sharp = j.level === 'G0' ? ' (sharp in its data)' : '';
-  const g1 = j.g1Deg === null || !Number.isFinite(j.g1Deg) ? '—' : `${j.g1Deg.toExponential(1)}°`;
-  const g0 = j.g0 === null || !Number.isFinite(j.g0) ? '—' : j.g0.toExponential(1);
-  return `“${j.patch}” seam v0 = v1${sharp}: ${j.level}, gap ${g0}, angle ${g1}: ${j.ok ? 'ok' : 'FAILS'}`;
+  const angle = j.g1Deg === null || !Number.isFinite(j.g1Deg) ? '—' : `${sig(j.g1Deg)}°`;
+  return `“${j.patch}” seam v0 = v1${sharp}: ${j.level}, gap ${sig(j.g0)}, angle ${angle}: ${j.ok ? 'ok' : 'FAILS'}`;
 }
 
 /** A fill's centre as one line of text (no markup). */
