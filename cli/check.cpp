@@ -35,7 +35,7 @@ std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved) {
   return out;
 }
 
-nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr, bool ok) {
+nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr) {
   using nlohmann::json;
   json joins = json::array(), seams = json::array(), crossings = json::array();
   for (const JoinResult& j : r.seams)
@@ -61,7 +61,7 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
   for (const InteriorCreases& c : cr)
     creases.push_back({{"patch", c.patch}, {"coarse_deg", c.coarseDeg}, {"fine_deg", c.fineDeg}, {"crease_deg", c.creaseDeg}, {"worst_u", c.u},
                        {"worst_v", c.v}, {"smooth", c.ok}});
-  return {{"ok", ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"seams", seams}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
+  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"seams", seams}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
           {"creases", creases}};
 }
 
@@ -75,10 +75,9 @@ int runCheck(const Options& o, std::ostream& out) {
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
   const std::vector<InteriorCreases> cr = creases(solved);
-  const bool ok = r.ok;
   if (o.json) {
-    out << toJson(r, res, cr, ok).dump(2) << "\n";
-    return ok ? 0 : 1;
+    out << toJson(r, res, cr).dump(2) << "\n";
+    return r.ok ? 0 : 1;
   }
   char line[512];
   for (const JoinResult& j : r.joins) {
@@ -120,9 +119,9 @@ int runCheck(const Options& o, std::ostream& out) {
   std::string summary = std::to_string(r.joins.size()) + " joins, ";
   if (!r.seams.empty()) summary += std::to_string(r.seams.size()) + (r.seams.size() == 1 ? " seam, " : " seams, ");
   if (!r.centres.empty()) summary += std::to_string(r.centres.size()) + " centres, ";
-  summary += std::to_string(r.crossings.size()) + " crossings: " + (ok ? "ok" : "FAILS") + "\n";
+  summary += std::to_string(r.crossings.size()) + " crossings: " + (r.ok ? "ok" : "FAILS") + "\n";
   out << summary;
-  return ok ? 0 : 1;
+  return r.ok ? 0 : 1;
 }
 
 }  // namespace pdesurf::cli

@@ -24,7 +24,8 @@ std::vector<std::vector<double>> hermiteBasis(int n);
 // derivative i at u = 0), corrected at u = 1 by the Hermite basis, instead of by h_s. What the
 // lift adds there is the approximation's remainder, the data's modes beyond N; a mode k of an
 // even-order operator with these coefficients decays like e^{-ku} (times powers of u), so a
-// decay of N + 1 carries the remainder as the true solution does its slowest omitted mode.
+// decay of N + 1 carries the remainder as the true solution does its slowest omitted mode (the
+// modal method passes 2(N + 1): measured, it leaves less at the sharpest corners).
 // A fill's loop has corners: its remainder is a kink at each, which h_s would carry unchanged
 // along the corner's ray to the centre (a crease); this lets it die out within ~1/N of the loop.
 void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, double decay = 0.0);

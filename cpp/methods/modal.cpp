@@ -45,8 +45,9 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
         for (VExpansion& slot : *side) {
           // A loop's data are periodic as a whole, not term by term (a side's family terms, a
           // power of v, do not close): the whole slot is expanded.
-          const VExpansion gen = p.periodicV && !generalPart(slot).empty() ? slot : generalPart(slot);
-          if (gen.empty()) continue;
+          const VExpansion general = generalPart(slot);
+          if (general.empty()) continue;
+          const VExpansion gen = p.periodicV ? slot : general;
           slot = p.periodicV ? VExpansion{} : familyPart(slot);
           const VExpansion approx = p.periodicV || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
                                     : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)

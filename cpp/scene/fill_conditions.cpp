@@ -107,7 +107,7 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     for (int i = 0; i < kPerSide; ++i) rise += scale[k] * sides[k].d[i].dot(normal);
   }
   rise /= static_cast<double>(n * kPerSide);
-  // The sheet the loop lies in (scene/loop_sheet.hpp): where a quadric height over the plane
+  // The sheet the loop lies in (scene/loop_sheet.hpp): where a cubic height over the plane
   // follows the loop and its borders' tangent planes, the centre goes on it (height × its
   // height at the centroid), leaves along its tangent plane and, curvature fills, with its
   // curvature. Else (a cap on a tube: its borders are steep over the plane) the centroid is
@@ -146,38 +146,34 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
   const auto linear = [](double a, double b, const Expr& sigma) { return add(constant(a), multiply(constant(b - a), sigma)); };
 
   const std::vector<SideMix> tangential = curvature ? curvatureCorners(loop, sides, scale, mix, radius) : std::vector<SideMix>(n, {0.0, 0.0, 0.0, 0.0});
-  // The centre: an umbilic of the loop's mean normal curvature across its borders, so the fill
-  // leaves C as X ≈ C + r p(v) + ½ r² κ |p(v)|² n (r = 1 - u, p(v) = a cos v + b sin v): a
-  // function of r cos v, r sin v only (harmonics 0 and 2), a regular point.
-  double kappa = 0.0;
-  for (size_t k = 0; k < n && curvature; ++k)
-    for (int i = 0; i < kPerSide; ++i) {
-      const FillSide& s = sides[k];
-      Eigen::Vector3d N = s.t[i].cross(s.d[i]).normalized();
-      if (N.dot(normal) < 0) N = -N;
-      kappa += s.dd[i].dot(N) / s.d[i].squaredNorm();
-    }
-  kappa /= static_cast<double>(n * kPerSide);
-  // X_uu(1, v) = B(v) n with B a quadratic form of p(v) = a cos v + b sin v (harmonics 0 and 2:
-  // a function of r cos v, r sin v, a regular point): the sheet's 2 h₂(p) when fitted (exact
-  // for a quadric sheet), else the umbilic κ |p|². As its constant, cos 2v and sin 2v parts.
+  // X_uu(1, v) = B(v) n, B a quadratic form in p(v) = a cos v + b sin v, so the fill leaves C as
+  // X ≈ C + r p(v) + ½ r² B(v) n (r = 1 - u), a function of r cos v, r sin v only (harmonics 0
+  // and 2): a regular point. B is the sheet's 2 h₂(p) when fitted (exact for a cubic sheet),
+  // else the umbilic κ |p|², κ the loop's mean normal curvature across its borders. Kept as its
+  // constant, cos 2v and sin 2v parts.
   std::array<double, 3> centreBend{};
-  if (curvature) {
-    const auto harmonics = [](double pa, double pb, double qa, double qb) {  // (pa cos + pb sin)(qa cos + qb sin)
-      return std::array<double, 3>{(pa * qa + pb * qb) / 2, (pa * qa - pb * qb) / 2, (pa * qb + pb * qa) / 2};
-    };
-    std::array<std::array<double, 3>, 3> terms;  // ξ², ξη, η² as harmonics; or |p|²
-    double weights[3];
-    if (sheet.fitted) {
-      const double a1 = a.dot(sheet.e1), b1 = b.dot(sheet.e1), a2 = a.dot(sheet.e2), b2 = b.dot(sheet.e2);
-      terms = {harmonics(a1, b1, a1, b1), harmonics(a1, b1, a2, b2), harmonics(a2, b2, a2, b2)};
-      weights[0] = 2 * sheet.c[3], weights[1] = 2 * sheet.c[4], weights[2] = 2 * sheet.c[5];
-    } else {
-      terms = {std::array<double, 3>{(a.dot(a) + b.dot(b)) / 2, (a.dot(a) - b.dot(b)) / 2, a.dot(b)}, {}, {}};
-      weights[0] = kappa, weights[1] = weights[2] = 0.0;
-    }
-    for (int t = 0; t < 3; ++t)
-      for (int h = 0; h < 3; ++h) centreBend[h] += weights[t] * terms[t][h];
+  // (pa cos v + pb sin v)(qa cos v + qb sin v) as its constant, cos 2v and sin 2v parts.
+  const auto product = [](double pa, double pb, double qa, double qb) {
+    return std::array<double, 3>{(pa * qa + pb * qb) / 2, (pa * qa - pb * qb) / 2, (pa * qb + pb * qa) / 2};
+  };
+  const auto addTimes = [&](double w, const std::array<double, 3>& h) {
+    for (int i = 0; i < 3; ++i) centreBend[i] += w * h[i];
+  };
+  if (curvature && sheet.fitted) {
+    const double a1 = a.dot(sheet.e1), b1 = b.dot(sheet.e1), a2 = a.dot(sheet.e2), b2 = b.dot(sheet.e2);
+    addTimes(2 * sheet.c[3], product(a1, b1, a1, b1));
+    addTimes(2 * sheet.c[4], product(a1, b1, a2, b2));
+    addTimes(2 * sheet.c[5], product(a2, b2, a2, b2));
+  } else if (curvature) {
+    double kappa = 0.0;
+    for (const FillSide& s : sides)
+      for (int i = 0; i < kPerSide; ++i) {
+        Eigen::Vector3d N = s.t[i].cross(s.d[i]).normalized();
+        if (N.dot(normal) < 0) N = -N;
+        kappa += s.dd[i].dot(N) / s.d[i].squaredNorm();
+      }
+    kappa /= static_cast<double>(n * kPerSide);
+    addTimes(kappa, {(a.dot(a) + b.dot(b)) / 2, (a.dot(a) - b.dot(b)) / 2, a.dot(b)});
   }
 
   // Border 0 runs over [-π/n, π/n]: its own expression on [0, π/n] (and below, so that the

@@ -12,8 +12,8 @@
 namespace pdesurf {
 
 struct LoopSheet {
-  bool fitted = false;         // false: the borders are too steep over the plane, or no quadric fits
-  Eigen::Vector3d e1, e2;      // the plane's axes (ξ, η)
+  bool fitted = false;         // false: the borders are too steep over the plane, or no cubic fits
+  Eigen::Vector3d e1 = Eigen::Vector3d::Zero(), e2 = Eigen::Vector3d::Zero();  // the plane's axes (ξ, η)
   std::array<double, 10> c{};  // h's coefficients, in that order
   double residual = 0.0;       // RMS misfit of the loop's points, scene units
 };

@@ -162,7 +162,6 @@ export function buildBuildFolder(gui, handlers) {
     },
     blendOptions: () => ({ continuity: draft.continuity, power: draft.power }),
     /** The fill's kind and how many borders it takes before a pick makes it ('pde': 6, or the button). */
-    fillKind: () => fillDraft.kind,
     fillOptions: () => ({ kind: fillDraft.kind, continuity: fillDraft.continuity }),
     /** After a blend or a fill was made (or refused): the choices start again. */
     clearChoices() {
