@@ -29,9 +29,13 @@ std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
 // Creases inside every patch (analysis/interior_creases.hpp), reported beside the verdict,
 // not in it: a typed surface or a blend of kinked data has the creases its model declares, and
 // a fill's corners still turn its normal fast nearby (docs/chains-and-fills.md, Limits).
-std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved) {
+std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved, const SceneReport& report) {
   std::vector<InteriorCreases> out;
-  for (const SolvedPatch& s : solved) out.push_back(measureCreases(s.patch->name, s.surface));
+  for (const SolvedPatch& s : solved) {
+    bool sharpSeam = false;
+    for (const JoinResult& seam : report.seams) sharpSeam = sharpSeam || (seam.patch == s.patch->name && seam.level == 0);
+    out.push_back(measureCreases(s.patch->name, s.surface, kCreaseGrid, 0.05, sharpSeam));
+  }
   return out;
 }
 
@@ -74,7 +78,7 @@ int runCheck(const Options& o, std::ostream& out) {
   const auto solved = solveScene(scene);
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
-  const std::vector<InteriorCreases> cr = creases(solved);
+  const std::vector<InteriorCreases> cr = creases(solved, r);
   if (o.json) {
     out << toJson(r, res, cr).dump(2) << "\n";
     return r.ok ? 0 : 1;

@@ -16,10 +16,14 @@ struct Largest {
 
 // The largest angle between neighbouring unit normals on an n × n grid of the margins' range.
 // Points without a tangent plane (|X_u × X_v| at rounding of |X_u||X_v|) are skipped.
-Largest largestTurn(const SeparableSurface& surface, int n, double marginFraction) {
-  SeparableSurface s = surface;  // the factors are functions of absolute u: only the range changes
+Largest largestTurn(const SeparableSurface& surface, int n, double marginFraction, bool sharpSeam) {
+  SeparableSurface s = surface;  // the factors are functions of absolute u, v: only the range changes
   const double margin = marginFraction * (surface.u1 - surface.u0);
   s.u0 = surface.u0 + margin, s.u1 = surface.u1 - margin;
+  if (sharpSeam) {
+    const double vMargin = marginFraction * (surface.v1 - surface.v0);
+    s.v0 = surface.v0 + vMargin, s.v1 = surface.v1 - vMargin;
+  }
   const GridSamples g = sampleGrid(s, n, n);
   const size_t m = static_cast<size_t>(n) + 1;
   std::vector<Eigen::Vector3d> normal(m * m);
@@ -45,10 +49,10 @@ Largest largestTurn(const SeparableSurface& surface, int n, double marginFractio
 
 }  // namespace
 
-InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n, double margin) {
+InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n, double margin, bool sharpSeam) {
   InteriorCreases r;
   r.patch = name;
-  const Largest coarse = largestTurn(s, n, margin), fine = largestTurn(s, 2 * n, margin);
+  const Largest coarse = largestTurn(s, n, margin, sharpSeam), fine = largestTurn(s, 2 * n, margin, sharpSeam);
   r.coarseDeg = coarse.deg, r.fineDeg = fine.deg;
   r.creaseDeg = std::max(0.0, 2 * fine.deg - coarse.deg);
   r.u = fine.u, r.v = fine.v;

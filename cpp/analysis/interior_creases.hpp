@@ -24,7 +24,11 @@ struct InteriorCreases {
 constexpr double kCreaseToleranceDeg = 0.01;
 constexpr int kCreaseGrid = 128;
 
-// margin: the part of the u-range left out at each end (0.05: the measure above).
-InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n = kCreaseGrid, double margin = 0.05);
+// margin: the part of the u-range left out at each end (0.05: the measure above). sharpSeam:
+// the patch's seam is a declared edge (sharp in its data: a trailing edge), a border like
+// u0 and u1, with the same margin left out of the v-range next to it (the edge rounds off
+// inside as the PDE's modes decay: a turn the grid does not resolve, not a crease).
+InteriorCreases measureCreases(const std::string& name, const SeparableSurface& s, int n = kCreaseGrid, double margin = 0.05,
+                               bool sharpSeam = false);
 
 }  // namespace pdesurf

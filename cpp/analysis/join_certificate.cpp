@@ -194,11 +194,11 @@ bool closesInV(const SeparableSurface& s, double size) {
 // direction at v0 and v1 (or none: a pole). A blend of a lens section is sharp at its seam by
 // declaration; it is judged there as a G0 edge (an acute edge's sides leave the same way: not
 // a fold).
-bool dataSmoothAcrossSeam(const SeparableSurface& s) {
+bool dataSmoothAcrossSeam(const SeparableSurface& s, double size) {
   for (double u : {s.u0, s.u1}) {
     const Eigen::Vector3d a = evalPoint(s, u, s.v0, 0, 1), b = evalPoint(s, u, s.v1, 0, 1);
     const double scale = std::max(a.norm(), b.norm());
-    if (scale == 0) continue;
+    if (!(scale > kClosedCorners * size)) continue;  // a pole (a fill's centre), to rounding
     if (!(a.cross(b).norm() <= 1e-8 * scale * scale && a.dot(b) > 0)) return false;
   }
   return true;
@@ -206,10 +206,11 @@ bool dataSmoothAcrossSeam(const SeparableSurface& s) {
 
 // What a closed patch promises across its own seam: at least G1 (a smooth surface has no
 // seam), G2 where its operator or its fill asks for curvature; G0 where its data are sharp
-// there (not a fill: a fill is built smooth inside whatever its loop's corners).
-int seamLevel(const Patch& p, const SeparableSurface& s) {
+// there (a fill's seam is mid-side unless it has one border: then it is that border's ends,
+// a wing tip's trailing edge, say).
+int seamLevel(const Patch& p, const SeparableSurface& s, double size) {
+  if (!dataSmoothAcrossSeam(s, size)) return 0;
   if (p.fill.given) return std::max(1, static_cast<int>(p.fill.continuity));
-  if (!dataSmoothAcrossSeam(s)) return 0;
   int order = 6;
   for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
   return std::max(1, order / 2 - 1);
@@ -262,7 +263,7 @@ std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, dou
     JoinResult r;
     r.patch = r.surface = sp.patch->name;
     r.end = "v1", r.edge = "v0";
-    r.level = seamLevel(*sp.patch, s);
+    r.level = seamLevel(*sp.patch, s, size);
     // v = v1 (its inward derivative -X_v) against v = v0 (+X_v), point by point along u, on the
     // open interval: the ends u0, u1 are the loops' own points (a fill's corner, its centre).
     const auto B = openEdgeSamples(s, true, 1, s.u0, s.u1, kJoinSamples), P = openEdgeSamples(s, true, 0, s.u0, s.u1, kJoinSamples);

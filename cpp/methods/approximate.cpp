@@ -175,6 +175,30 @@ bool isPeriodic(const VExpansion& f, double v0, double v1) {
   return true;
 }
 
+bool hasSeamCorner(const PdeProblem& p) {
+  bool corner = false;
+  for (const auto& c : p.component)
+    for (const auto* side : {&c.left, &c.right})
+      for (const VExpansion& slot : *side) {
+        const double a = expansionValue(slot, p.v0), b = expansionValue(slot, p.v1);
+        if (!(std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))))) return false;
+        corner = corner || !isPeriodic(slot, p.v0, p.v1);
+      }
+  return corner;
+}
+
+bool familyTermsClose(const PdeProblem& p) {
+  for (const auto& c : p.component)
+    for (const auto* side : {&c.left, &c.right})
+      for (const VExpansion& slot : *side)
+        for (const VTerm& t : slot) {
+          if (t.g.isGeneral()) continue;
+          const double a = expansionValue({t}, p.v0), b = expansionValue({t}, p.v1);
+          if (!(std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))))) return false;
+        }
+  return true;
+}
+
 PdeProblem mapSlots(const PdeProblem& p, const std::function<VExpansion(const VExpansion&)>& map) {
   static const char* axis[3] = {"x", "y", "z"};
   PdeProblem out = p;

@@ -25,8 +25,9 @@ std::vector<std::vector<double>> hermiteBasis(int n) {
 namespace {
 
 // The lift's basis for one coordinate of order 2n: slot s = end*n + i as ExpPoly pieces.
-// Without decay the Hermite polynomials; with it, the u = 0 slots decay (see the header).
-std::vector<std::vector<ExpPoly>> liftBasis(int n, double decay) {
+// Without decay the Hermite polynomials; with it, the slots of each decaying end decay away
+// from it (see the header), each corrected at the other end by that end's Hermite polynomials.
+std::vector<std::vector<ExpPoly>> liftBasis(int n, const LiftDecay& decay) {
   const std::vector<std::vector<double>> h = hermiteBasis(n);
   std::vector<std::vector<ExpPoly>> basis(2 * n);
   for (int slot = 0; slot < 2 * n; ++slot) {
@@ -34,29 +35,38 @@ std::vector<std::vector<ExpPoly>> liftBasis(int n, double decay) {
     piece.poly.assign(h[slot].begin(), h[slot].end());
     basis[slot].push_back(piece);
   }
-  if (!(decay > 0)) return basis;
-  // d^j/du^j [e^{-λu} Σ_m c_m u^m] at 0 = Σ_{m<=j} C(j, m) (-λ)^{j-m} m! c_m: lower triangular.
-  for (int i = 0; i < n; ++i) {
-    std::vector<double> c(n, 0.0);
-    for (int j = 0; j < n; ++j) {
-      double rest = j == i ? 1.0 : 0.0, binom = 1.0, fact = 1.0;
-      for (int m = 0; m < j; ++m) {
-        rest -= binom * std::pow(-decay, j - m) * fact * c[m];
-        binom = binom * (j - m) / (m + 1), fact *= m + 1;
+  for (int end = 0; end < 2; ++end) {
+    const double lambda = end == 0 ? decay.atU0 : decay.atU1;
+    if (!(lambda > 0)) continue;
+    // e^{r(u-e)} Σ_m c_m (u-e)^m with r = -λ at u = 0, +λ at u = 1 (so it decays into the
+    // patch and is never evaluated growing). Its j-th derivative at u = e is
+    // Σ_{m<=j} C(j, m) r^{j-m} m! c_m: lower triangular in c.
+    const double rate = end == 0 ? -lambda : lambda;
+    for (int i = 0; i < n; ++i) {
+      std::vector<double> c(n, 0.0);
+      for (int j = 0; j < n; ++j) {
+        double rest = j == i ? 1.0 : 0.0, binom = 1.0, fact = 1.0;
+        for (int m = 0; m < j; ++m) {
+          rest -= binom * std::pow(rate, j - m) * fact * c[m];
+          binom = binom * (j - m) / (m + 1), fact *= m + 1;
+        }
+        c[j] = rest / fact;  // C(j, j) = 1, j!
       }
-      c[j] = rest / fact;  // C(j, j) = 1, j!
-    }
-    ExpPoly piece;
-    piece.rate = -decay;
-    piece.poly.assign(c.begin(), c.end());
-    basis[i] = {piece};
-    // Its values at u = 1 (e^{-λ} there: tiny, but the far end's data are met exactly).
-    for (int q = 0; q < n; ++q) {
-      const double at1 = std::exp(-decay) * evalPoly(derivativePoly(piece.poly, piece.rate, q), 1.0).real();
-      if (at1 == 0.0) continue;
-      ExpPoly fix;
-      for (const cplx& x : basis[n + q].front().poly) fix.poly.push_back(-at1 * x.real());
-      basis[i].push_back(fix);
+      ExpPoly piece;
+      piece.rate = rate;
+      piece.shift = end;
+      piece.poly.assign(c.begin(), c.end());
+      const int slot = end * n + i, far = (1 - end) * n;
+      basis[slot] = {piece};
+      // Its values at the far end (e^{-λ} there: tiny, but the far end's data are met exactly).
+      const double x = (1 - end) - end;  // far end - shift: +1 or -1
+      for (int q = 0; q < n; ++q) {
+        const double atFar = std::exp(-lambda) * evalPoly(derivativePoly(piece.poly, piece.rate, q), x).real();
+        if (atFar == 0.0) continue;
+        ExpPoly fix;
+        for (double y : h[far + q]) fix.poly.push_back(-atFar * y);
+        basis[slot].push_back(fix);
+      }
     }
   }
   return basis;
@@ -78,7 +88,7 @@ void scaleInto(const std::vector<ExpPoly>& basis, double factor, std::vector<Exp
 
 }  // namespace
 
-void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, double decay) {
+void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, const LiftDecay& decay) {
   for (int c = 0; c < 3; ++c) {
     const ComponentProblem& cp = p.component[c];
     const int n = static_cast<int>(cp.alpha.size()) - 1;

@@ -20,14 +20,19 @@ namespace pdesurf {
 // Hermite basis of degree 2n-1 on [0, 1], ascending powers: h[s] has unit slot s = end*n + i.
 std::vector<std::vector<double>> hermiteBasis(int n);
 
-// decay > 0: the u = 0 end's slots are carried by e^{-decay·u} p_i(u) (p_i of degree n-1, unit
-// derivative i at u = 0), corrected at u = 1 by the Hermite basis, instead of by h_s. What the
-// lift adds there is the approximation's remainder, the data's modes beyond N; a mode k of an
-// even-order operator with these coefficients decays like e^{-ku} (times powers of u), so a
-// decay of N + 1 carries the remainder as the true solution does its slowest omitted mode (the
-// modal method passes 2(N + 1): measured, it leaves less at the sharpest corners).
-// A fill's loop has corners: its remainder is a kink at each, which h_s would carry unchanged
-// along the corner's ray to the centre (a crease); this lets it die out within ~1/N of the loop.
-void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, double decay = 0.0);
+// Decay rates of the lift's slots at u = 0 and at u = 1 (0: the Hermite polynomials h_s).
+// With atU0 = λ > 0 the u = 0 end's slots are carried by e^{-λu} p_i(u) (p_i of degree n-1,
+// unit derivative i at u = 0), corrected at u = 1 by the Hermite basis; atU1 likewise from
+// u = 1 inward. What the lift adds there is the approximation's remainder, the data's modes
+// beyond N; a mode k of an even-order operator with these coefficients decays like e^{-ku}
+// (times powers of u), so a decay of N + 1 carries the remainder as the true solution does its
+// slowest omitted mode (the modal method passes 2(N + 1): measured, it leaves less at the
+// sharpest corners). A loop with corners (a fill's, a lens section's, a trailing edge's) has a
+// kink at each as its remainder, which h_s would carry unchanged along the corner's line across
+// the patch (a crease); this lets it die out within ~1/N of the edge that has it.
+struct LiftDecay {
+  double atU0 = 0.0, atU1 = 0.0;
+};
+void imposeBoundaryData(SeparableSurface& s, const PdeProblem& p, const LiftDecay& decay = {});
 
 }  // namespace pdesurf

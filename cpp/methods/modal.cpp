@@ -34,7 +34,7 @@ namespace {
 constexpr int kMaxOpenDegree = 20;
 int endMatchOrder(const ComponentProblem& c) { return std::min(2 * static_cast<int>(c.alpha.size()), 8); }
 
-PdeProblem modalProblem(const PdeProblem& p, int N) {
+PdeProblem modalProblem(const PdeProblem& p, int N, bool loop) {
   PdeProblem q = p;
   static const char* axis[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
@@ -46,10 +46,10 @@ PdeProblem modalProblem(const PdeProblem& p, int N) {
           // A loop's data are periodic as a whole, not term by term (a side's family terms, a
           // power of v, do not close): the whole slot is expanded.
           const VExpansion general = generalPart(slot);
-          if (general.empty()) continue;
-          const VExpansion gen = p.periodicV ? slot : general;
-          slot = p.periodicV ? VExpansion{} : familyPart(slot);
-          const VExpansion approx = p.periodicV || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
+          if (general.empty() && (!loop || p.periodicV)) continue;
+          const VExpansion gen = loop ? slot : general;
+          slot = loop ? VExpansion{} : familyPart(slot);
+          const VExpansion approx = loop || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
                                     : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)
                                                                 : endMatchedFourier(gen, p.v0, p.v1, N, m);
           slot.insert(slot.end(), approx.begin(), approx.end());
@@ -141,9 +141,16 @@ bool hasGeneralSlots(const PdeProblem& p) {
 
 SeparableSurface solveModal(const PdeProblem& p, int N, BasisCache* cache) {
   if (N < 1 || N > 2048) throw Error(ErrorCode::InvalidField, "modal needs 1 <= N <= 2048 terms");
-  SeparableSurface s = solveClosedForm(modalProblem(p, N), cache);
-  // The joins exact, whatever N; a loop's corners (a fill's) carried only near the loop.
-  if (hasGeneralSlots(p)) imposeBoundaryData(s, p, p.periodicV ? 2 * (N + 1.0) : 0.0);
+  const bool loop = p.periodicV || hasSeamCorner(p);
+  SeparableSurface s = solveClosedForm(modalProblem(p, N, loop), cache);
+  // The joins exact, whatever N; a loop's corners (a fill's, a tube's seam) carried only near
+  // the edge that has them. A fill's u = 1 is its centre, given whole: no remainder to carry.
+  if (loop || hasGeneralSlots(p)) {
+    const double rate = 2 * (N + 1.0);
+    LiftDecay decay;
+    if (loop) decay = {rate, p.periodicV ? 0.0 : rate};
+    imposeBoundaryData(s, p, decay);
+  }
   return s;
 }
 

@@ -38,7 +38,7 @@ OUT = os.path.normpath(os.path.join(HERE, "..", "..", "examples", "you2004-fig8d
 X_NOSE, XA, X1, X2, X3, X4, X_TAIL = 5.2, 3.8, 2.2, -0.6, -4.0, -5.2, -6.6
 XM = (X1 + X2) / 2  # the lens centre
 XT = (X3 + X4) / 2  # the tail lens's centre
-RIM_DWELL = 0.05  # the rim's dwell at its rear tip (see below)
+RIM_DWELL = 0.005  # the rim's dwell at its front tip (see below)
 
 
 def param(value, lo, hi, label):
@@ -122,12 +122,16 @@ patches.append({"name": "nose", "kind": "fill", "borders": [{"patch": "front1", 
 
 # --- wing-root rims, blends and wings ------------------------------------------------------
 # The rim, in the plane y = -R (left) / +R (right), is a lens pointed at both ends: x runs
-# linearly from x1 (v = 0) to x2 over the top and back underneath, z = h R sin(phi). The front tip
-# is the seam (v = 0 and 2 pi); at the rear tip the rim dwells for v in [pi - E, pi + E], so that
-# each branch's own tangent is found where the fills' sides end (an expression's derivative at a
-# kink is the mean of the two one-sided ones: half the branch's tangent next to a dwell, the
-# right direction; at a bare kink the two branches' tangents would cancel in x). The rim's cross
-# derivative (into the root blend) is -lam (h R cos phi, 0, A sin phi): smooth in v, inside the
+# linearly from x2 (v = 0) to x1 underneath and back over the top, z = -h R sin(phi). The rear tip
+# is the seam (v = 0 and 2 pi), where the wing's trailing edge lies (the root blend runs from
+# one to the other along its seam, a sharp edge both ends of which are in its data); at the
+# front tip the rim dwells for v in [pi - E, pi + E], so that each branch's own tangent is found
+# where the fills' sides end (an expression's derivative at a kink is the mean of the two
+# one-sided ones: half the branch's tangent next to a dwell, the right direction; at a bare kink
+# the two branches' tangents would cancel in x). The dwell is short (E = 0.005: the blend's
+# boundary is still over 1e-2 of its v there) and its corner is carried into the blend only near
+# its edge (the modal method's decaying lift for a loop with a corner). The rim's cross
+# derivative (into the root blend) is lam (h R cos phi, 0, A sin phi): smooth in v, inside the
 # plane, transversal to the rim everywhere (along the lens's axis at the tips), so the fills'
 # corners at the tips find each branch's tangent plane y = +-R.
 E = RIM_DWELL
@@ -143,20 +147,20 @@ def ramp(c, side):
 
 
 PHI = f"{3.141592653589793 / C1!r}*(v - {ramp(C1, 'L')} + {ramp(C2, 'R')})"
-RANGE_TOP = [0, C1]
-RANGE_BOTTOM = [C2, "2*pi"]
+RANGE_BOTTOM = [0, C1]  # from the rear tip to the front underneath (the surfaces' normals face out)
+RANGE_TOP = [C2, "2*pi"]  # from the front tip back over the top
 
 
 def root_blend(name, side, surface, x_front, x_back, radius, zc, h, lam, power):
-    """A root blend from the lens in the plane y = -+radius between x_front and x_back (centre
-    height zc, half-height h × radius) to the surface's root border t = 0, by reference."""
-    rim_x = f"{x_front} + {(x_back - x_front) / C1!r}*(v - {ramp(C1, 'L')} - {ramp(C2, 'R')})"
+    """A root blend from the lens in the plane y = -+radius between x_back (its seam) and x_front
+    (centre height zc, half-height h × radius) to the surface's root border t = 0, by reference."""
+    rim_x = f"{x_back} + {(x_front - x_back) / C1!r}*(v - {ramp(C1, 'L')} - {ramp(C2, 'R')})"
     half = f"{h}*{radius}"
-    rim_z = f"{zc} + {half}*sin({PHI})"
+    rim_z = f"{zc} - {half}*sin({PHI})"
     a = (x_front - x_back) / 3.141592653589793  # |dx/dphi| along a branch
     y = f"-{radius}" if side < 0 else f"{radius}"
     pos = (rim_x, y, rim_z)
-    der = (f"-{lam}*{half}*cos({PHI})", "0", f"-{lam}*{a!r}*sin({PHI})")
+    der = (f"{lam}*{half}*cos({PHI})", "0", f"{lam}*{a!r}*sin({PHI})")
     b = typed(u0=(pos, der))
     for axis in "xyz":
         b[axis] = {"u0": b[axis]["u0"]}
@@ -165,15 +169,29 @@ def root_blend(name, side, surface, x_front, x_back, radius, zc, h, lam, power):
                method="modal:64")
 
 
+# The wings' and stabilisers' section: a symmetric NACA 00xx profile with a closed, sharp
+# trailing edge at v = 0 (the surfaces' seam) and a round leading edge at v = pi. With
+# r = cos(v/4) - sin(v/4) (1 at v = 0, 0 at pi, -1 at 2 pi), r^2 = 1 - sin(v/2) is the distance
+# from the leading edge in chords and r carries the side: lower surface for v in (0, pi), so that t x v faces out. The
+# thickness is NACA's, 5 tau (0.2969 sqrt x - 0.1260 x - ...), taken as an odd polynomial in
+# r = +-sqrt x, smooth through the leading edge: r (1 - r^2)(2.969 + b1 r^2 + b2 r^4 + b3 r^6), its
+# nose term NACA's, b fitted by least squares (within 1.8 % of the half thickness, largest
+# 0.99 of it at 30 % chord). The trailing edge is a kink in v at the seam (sin(v/2) is not
+# 2 pi-periodic in slope): the only sharp feature, declared by the section's own data.
+R_SECTION = "(cos(v/4) - sin(v/4))"
+NACA = (f"{R_SECTION}*(1 - {R_SECTION}^2)*(2.969 - 2.085918295172564*{R_SECTION}^2"
+        f" + 3.282488016045064*{R_SECTION}^4 - 1.9895231029312184*{R_SECTION}^6)")
+
+
 def wing(name, side):
     s = "-" if side < 0 else ""
     half_chord = "chord*(1 - taper*t)"
     half_thick = "thick*(1 - taper*t)"
     return {
         "name": name, "kind": "surface", "t_range": [0, 1], "v_range": [0, "2*pi"],
-        "x": f"{XM} - sweep*t + {half_chord}*cos(v)",
+        "x": f"{XM} - sweep*t + {half_chord}*(2*sin(v/2) - 1)",
         "y": f"{s}(R + gap + span*t)",
-        "z": f"dihedral*t + {half_thick}*sin(v)*(0.8 + 0.35*cos(v))",
+        "z": f"dihedral*t - {half_thick}*{NACA}",
         "placement": {"translate": ["wing_x", 0, 0]},
     }
 
@@ -184,9 +202,9 @@ def stabiliser(name, side):
     half_thick = "stab_thick*(1 - stab_taper*t)"
     return {
         "name": name, "kind": "surface", "t_range": [0, 1], "v_range": [0, "2*pi"],
-        "x": f"{XT} - stab_sweep*t + {half_chord}*cos(v)",
+        "x": f"{XT} - stab_sweep*t + {half_chord}*(2*sin(v/2) - 1)",
         "y": f"{s}(tail_r*R + stab_gap + stab_span*t)",
-        "z": f"tail_lift*R + stab_dihedral*t + {half_thick}*sin(v)*(0.8 + 0.35*cos(v))",
+        "z": f"tail_lift*R + stab_dihedral*t - {half_thick}*{NACA}",
         "placement": {"translate": ["stab_x", 0, 0]},
     }
 
@@ -201,14 +219,15 @@ patches.append({"name": "tipL", "kind": "fill", "borders": [{"patch": "wingL", "
 patches.append({"name": "tipR", "kind": "fill", "borders": [{"patch": "wingR", "at": "t1"}], "height": 0.3})
 
 # --- the fuselage between x1 and x2: two 4-sided fills ------------------------------------
-# height 1.7: the centre at about the fuselage's top (z = 0.72 R at the default 1: a dip).
-patches.append({"name": "mid_top", "kind": "fill", "height": 1.7, "borders": [
+# Their heights put the centres on the fuselage (z = R at the top): measured with pdesurf check.
+MID_HEIGHT, TAIL_HEIGHT = 1.385, 1.92
+patches.append({"name": "mid_top", "kind": "fill", "height": MID_HEIGHT, "borders": [
     {"patch": "front2", "at": "u1", "range": [0, PI]},
     {"patch": "rootL", "at": "u0", "range": RANGE_TOP},
     {"patch": "rear1", "at": "u0", "range": [0, PI], "reverse": True},
     {"patch": "rootR", "at": "u0", "range": RANGE_TOP, "reverse": True},
 ]})
-patches.append({"name": "mid_bottom", "kind": "fill", "height": 1.7, "borders": [
+patches.append({"name": "mid_bottom", "kind": "fill", "height": MID_HEIGHT, "borders": [
     {"patch": "front2", "at": "u1", "range": [PI, "2*pi"]},
     {"patch": "rootR", "at": "u0", "range": RANGE_BOTTOM, "reverse": True},
     {"patch": "rear1", "at": "u0", "range": [PI, "2*pi"], "reverse": True},
@@ -233,13 +252,13 @@ patches.append(stabiliser("stabL", -1))
 patches.append(stabiliser("stabR", +1))
 patches.append({"name": "stabTipL", "kind": "fill", "borders": [{"patch": "stabL", "at": "t1"}], "height": 0.3})
 patches.append({"name": "stabTipR", "kind": "fill", "borders": [{"patch": "stabR", "at": "t1"}], "height": 0.3})
-patches.append({"name": "tail_top", "kind": "fill", "height": 1.7, "borders": [
+patches.append({"name": "tail_top", "kind": "fill", "height": TAIL_HEIGHT, "borders": [
     {"patch": "rear1", "at": "u1", "range": [0, PI]},
     {"patch": "stabRootL", "at": "u0", "range": RANGE_TOP},
     {"patch": "rear2", "at": "u0", "range": [0, PI], "reverse": True},
     {"patch": "stabRootR", "at": "u0", "range": RANGE_TOP, "reverse": True},
 ]})
-patches.append({"name": "tail_bottom", "kind": "fill", "height": 1.7, "borders": [
+patches.append({"name": "tail_bottom", "kind": "fill", "height": TAIL_HEIGHT, "borders": [
     {"patch": "rear1", "at": "u1", "range": [PI, "2*pi"]},
     {"patch": "stabRootR", "at": "u0", "range": RANGE_BOTTOM, "reverse": True},
     {"patch": "rear2", "at": "u0", "range": [PI, "2*pi"], "reverse": True},
