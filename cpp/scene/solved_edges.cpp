@@ -67,6 +67,17 @@ EdgeExprs bezierEdge(const SolvedPatch& sp, int edge, int derivatives) {
   return e;
 }
 
+// The boundary slot ∂^d X_c/∂u^d of the problem a pde patch was solved for, at its edge u0 or
+// u1, when its method imposes the data exactly (the lift: modal, closed, reference); else null.
+const VExpansion* dataAt(const SolvedPatch& sp, int edge, int c, int d) {
+  if (sp.patch->kind != PatchKind::Pde || sp.surface.pointwise[c]) return nullptr;
+  const MethodKind kind = sp.used.kind;
+  if (kind != MethodKind::Modal && kind != MethodKind::Closed && kind != MethodKind::Reference) return nullptr;
+  const ComponentProblem& cp = sp.pde().component[c];
+  const std::vector<VExpansion>& side = edge == 1 ? cp.right : cp.left;
+  return d < static_cast<int>(side.size()) ? &side[d] : nullptr;
+}
+
 }  // namespace
 
 Expr functionExpr(const VFunction& g) {
@@ -109,8 +120,13 @@ EdgeExprs solvedEdge(const SolvedPatch& sp, int edge, int derivatives) {
     for (size_t i = 0; i < coefs.size(); ++i) {
       const Expr g = functionExpr(s.component[c][i].g);
       for (int d = 0; d <= derivatives; ++d)
-        if (std::abs(coefs[i][d]) > kEdgeRounding * largest[d]) k[d] = sum(k[d], scaled(coefs[i][d], g));
+        if (!dataAt(sp, edge, c, d) && std::abs(coefs[i][d]) > kEdgeRounding * largest[d]) k[d] = sum(k[d], scaled(coefs[i][d], g));
     }
+    // Where the method imposed the patch's own data exactly, the edge is those data as given:
+    // independent of the far end's patch, whatever rounding the solve left.
+    for (int d = 0; d <= derivatives; ++d)
+      if (const VExpansion* slot = dataAt(sp, edge, c, d))
+        for (const VTerm& t : *slot) k[d] = sum(k[d], scaled(t.coef, functionExpr(t.g)));
     if (s.pointwise[c]) {
       Expr p = s.pointwise[c];
       for (int d = 0; d <= derivatives; ++d) {
