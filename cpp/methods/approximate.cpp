@@ -167,11 +167,20 @@ PdeProblem familyProblem(const PdeProblem& p) {
   return q;
 }
 
+namespace {
+
+// Two values of a boundary function at v0 and v1 that are one value (to 1e-9 of their size).
+bool sameValue(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))); }
+
+bool sameAtEnds(const VExpansion& f, double v0, double v1, int k = 0) {
+  return sameValue(expansionValue(f, v0, k), expansionValue(f, v1, k));
+}
+
+}  // namespace
+
 bool isPeriodic(const VExpansion& f, double v0, double v1) {
-  for (int k = 0; k <= 2; ++k) {
-    const double a = expansionValue(f, v0, k), b = expansionValue(f, v1, k);
-    if (std::abs(a - b) > 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b)))) return false;
-  }
+  for (int k = 0; k <= 2; ++k)
+    if (!sameAtEnds(f, v0, v1, k)) return false;
   return true;
 }
 
@@ -180,8 +189,7 @@ bool hasSeamCorner(const PdeProblem& p) {
   for (const auto& c : p.component)
     for (const auto* side : {&c.left, &c.right})
       for (const VExpansion& slot : *side) {
-        const double a = expansionValue(slot, p.v0), b = expansionValue(slot, p.v1);
-        if (!(std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))))) return false;
+        if (!sameAtEnds(slot, p.v0, p.v1)) return false;
         corner = corner || !isPeriodic(slot, p.v0, p.v1);
       }
   return corner;
@@ -191,11 +199,8 @@ bool familyTermsClose(const PdeProblem& p) {
   for (const auto& c : p.component)
     for (const auto* side : {&c.left, &c.right})
       for (const VExpansion& slot : *side)
-        for (const VTerm& t : slot) {
-          if (t.g.isGeneral()) continue;
-          const double a = expansionValue({t}, p.v0), b = expansionValue({t}, p.v1);
-          if (!(std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))))) return false;
-        }
+        for (const VTerm& t : slot)
+          if (!t.g.isGeneral() && !sameAtEnds({t}, p.v0, p.v1)) return false;
   return true;
 }
 

@@ -29,10 +29,10 @@ VExpansion endMatchedFourier(const VExpansion& f, double v0, double v1, int N, i
 // Whether f and its first two derivatives agree at v0 and v1 (so Fourier modes converge fast).
 bool isPeriodic(const VExpansion& f, double v0, double v1);
 // A tube with a corner on its seam (a lens rim, a trailing edge): every slot of both ends takes
-// the same value at v0 and v1 (both u-edges are loops), but some slot is not smooth across it
-// (its first or second derivative differs), or its terms are not 2π/(v1 - v0)-periodic (sin(v/2)
-// over [0, 2π]). The closed form continues such data past v1 analytically, not periodically:
-// its interior would not close. The modal method expands the loop whole instead.
+// the same value at v0 and v1 (both u-edges are loops), but some slot's first or second
+// derivative differs there. The closed form continues such data past v1 analytically, not
+// periodically: unless its families close term by term (familyTermsClose), its interior does
+// not close. The modal method expands the loop whole instead.
 bool hasSeamCorner(const PdeProblem& p);
 // Whether every family term of every slot takes the same value at v0 and v1: the closed form,
 // which solves term by term, then closes (seed 000 Fig. 4a's sin(v/2) edge: sharp along its

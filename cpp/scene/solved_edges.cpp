@@ -1,6 +1,5 @@
 #include "scene/solved_edges.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "basis/general_function.hpp"
@@ -9,9 +8,6 @@
 namespace pdesurf {
 
 namespace {
-
-// A term of a solved edge this far below the edge's largest is rounding (see solvedEdge).
-constexpr double kEdgeRounding = 1e-14;
 
 Expr v() { return variable(ExprVar::V); }
 
@@ -107,26 +103,19 @@ EdgeExprs solvedEdge(const SolvedPatch& sp, int edge, int derivatives) {
   e.a0 = s.v0, e.a1 = s.v1;
   for (int c = 0; c < 3; ++c) {
     std::array<Expr, 3> k;  // the u-derivatives 0, 1, 2 along the edge
-    // Terms at rounding of the edge's largest are left out: what the far end's data leave at
-    // this one after the lift cancels them (a tube's u = 1 modes at u = 0), noise that would
-    // make the edge, and whatever is built on it, depend on the far end's patch.
-    std::vector<std::array<double, 3>> coefs(s.component[c].size());
-    std::array<double, 3> largest{};
-    for (size_t i = 0; i < coefs.size(); ++i)
-      for (int d = 0; d <= derivatives; ++d) {
-        coefs[i][d] = s.component[c][i].G.eval(u, d);
-        largest[d] = std::max(largest[d], std::abs(coefs[i][d]));
-      }
-    for (size_t i = 0; i < coefs.size(); ++i) {
-      const Expr g = functionExpr(s.component[c][i].g);
-      for (int d = 0; d <= derivatives; ++d)
-        if (!dataAt(sp, edge, c, d) && std::abs(coefs[i][d]) > kEdgeRounding * largest[d]) k[d] = sum(k[d], scaled(coefs[i][d], g));
-    }
-    // Where the method imposed the patch's own data exactly, the edge is those data as given:
-    // independent of the far end's patch, whatever rounding the solve left.
-    for (int d = 0; d <= derivatives; ++d)
-      if (const VExpansion* slot = dataAt(sp, edge, c, d))
+    for (int d = 0; d <= derivatives; ++d) {
+      // Where the method imposed the patch's own data exactly, the edge is those data as given:
+      // not the solve's evaluation, whose rounding (the far end's modes cancelled by the lift)
+      // would make the edge, and whatever is built on it, depend on the far end's patch.
+      if (const VExpansion* slot = dataAt(sp, edge, c, d)) {
         for (const VTerm& t : *slot) k[d] = sum(k[d], scaled(t.coef, functionExpr(t.g)));
+        continue;
+      }
+      for (const SeparableTerm& t : s.component[c]) {
+        const double coef = t.G.eval(u, d);
+        if (coef != 0.0) k[d] = sum(k[d], scaled(coef, functionExpr(t.g)));
+      }
+    }
     if (s.pointwise[c]) {
       Expr p = s.pointwise[c];
       for (int d = 0; d <= derivatives; ++d) {
