@@ -37,11 +37,13 @@ Vec3Expr onTrimline(const Vec3Expr& e, const Expr& tau) {
 const char* edgeName(bool t1) { return t1 ? "t1" : "t0"; }
 
 // One referenced end: the surface's position and t-derivatives on its trimline, in v, all in
-// the surface's own (untrimmed) parametrisation.
+// the surface's own (untrimmed) parametrisation. Or a fill's border on a surface (border set,
+// end -1): it takes part in the trimming rules, and a curve border is checked and trims.
 struct DerivedEnd {
-  Patch* blend = nullptr;
+  Patch* blend = nullptr;  // the blend, or the fill
   int end = 0;
   EndReference* ref = nullptr;
+  LoopBorder* border = nullptr;
   Patch* surface = nullptr;
   size_t surfaceIndex = 0;
   TrimlineExprs e;
@@ -57,12 +59,37 @@ DerivedEnd locate(Scene& scene, Patch& blend, int end) {
   return d;
 }
 
+// A fill's border on a surface patch (a curve needs a "surface" patch; an iso-line on any
+// other primary is left to linkPatches, as it cannot be trimmed).
+bool locateBorder(Scene& scene, Patch& fill, LoopBorder& b, DerivedEnd& d) {
+  Patch* source = nullptr;
+  for (size_t i = 0; i < scene.patches.size(); ++i)
+    if (scene.patches[i].name == b.patch) source = &scene.patches[i], d.surfaceIndex = i;
+  if (!b.curve.given) {
+    if (!source || source->kind != PatchKind::Primary || b.edge > 1) return false;
+    b.curve.surface = b.patch, b.curve.atT1 = b.edge == 1, b.curve.path = b.path;
+  } else {
+    if (!source) fail(ErrorCode::UnknownName, b.path + ".patch", "no patch named '" + b.patch + "'");
+    if (source->kind != PatchKind::Primary || !source->primary.full[0])
+      fail(ErrorCode::InvalidField, b.path + ".at",
+           "'" + b.patch + "' is a " + source->kindName + " patch; a trimline curve is drawn on a \"surface\" patch (expressions in t and v)");
+    b.curve.power = constant(1.0);
+  }
+  d.blend = &fill, d.end = -1, d.ref = &b.curve, d.border = &b, d.surface = source;
+  return true;
+}
+
 // Step 2: the rules between ends, whatever the patches' order: a surface is trimmed along one
-// curve at most, and the border that curve replaces is met by no other end.
+// curve at most (ends and fill borders may share it: the same τ, replacing the same border),
+// and the border that curve replaces is met by no other end.
 const DerivedEnd* trimOf(const std::vector<DerivedEnd>& all, const Patch* surface) {
   for (const DerivedEnd& d : all)
     if (d.surface == surface && d.ref->curve) return &d;
   return nullptr;
+}
+
+bool sameCurve(const EndReference& a, const EndReference& b) {
+  return a.atT1 == b.atT1 && a.tau == b.tau;  // interned: equal expressions are one node
 }
 
 void checkRules(const std::vector<DerivedEnd>& all) {
@@ -77,6 +104,7 @@ void checkRules(const std::vector<DerivedEnd>& all) {
     }
     const DerivedEnd* cut = trimOf(all, d.surface);
     if (!cut || cut == &d) continue;
+    if (d.ref->curve && sameCurve(*d.ref, *cut->ref)) continue;
     if (d.ref->curve)
       fail(ErrorCode::InvalidField, d.ref->path + ".at",
            "'" + d.ref->surface + "' is already trimmed along a curve by " + cut->ref->path + "; a surface can be trimmed along one curve only");
@@ -96,7 +124,8 @@ void derive(DerivedEnd& d) {
   d.e.P = onTrimline(S.full, d.e.tau);
   d.e.T = onTrimline(St, d.e.tau);
   if (ref.continuity == Continuity::Curvature) d.e.C = onTrimline(map3(St, derivative), d.e.tau);
-  d.meanT = checkTrimline(ref, S, d.e, d.blend->pde.v0, d.blend->pde.v1);
+  // A fill's curve is checked over the surface's whole v-range: the surface is drawn over it.
+  d.meanT = d.border ? checkTrimline(ref, S, d.e, S.v0, S.v1) : checkTrimline(ref, S, d.e, d.blend->pde.v0, d.blend->pde.v1);
 }
 
 // Mean distance between the two ends' curves over the blend's v-range.
@@ -177,6 +206,7 @@ void recordJoin(const DerivedEnd& d, bool trimmed) {
 // scene's budget, so tessellation never differentiates an unbounded graph.
 void trim(Patch& surface, const EndReference& ref) {
   PrimarySurface& S = surface.primary;
+  if (S.trimmed) return;  // by an end or border with the same curve
   const Expr tFar = constant(ref.atT1 ? S.t0 : S.t1);
   const Expr t = add(ref.tau, multiply(variable(ExprVar::U), subtract(tFar, ref.tau)));
   for (int c = 0; c < 3; ++c) {
@@ -187,6 +217,14 @@ void trim(Patch& surface, const EndReference& ref) {
   S.t0 = 0.0;
   S.t1 = 1.0;
   S.trimmed = true;
+  S.trimReplacesT1 = ref.atT1;
+}
+
+// A fill's border in the drawn parametrisation: a curve is the trimmed surface's edge 0, the
+// border a curve does not replace its edge 1 (the rules refused the one it replaces).
+void pointBorder(const DerivedEnd& d, bool trimmed) {
+  LoopBorder& b = *d.border;
+  b.edge = d.ref->curve ? 0 : trimmed ? 1 : b.edge;
 }
 
 }  // namespace
@@ -204,20 +242,31 @@ void deriveEnds(Scene& scene, ExprBudget& budget) {
     if (blend.kind != PatchKind::Pde) continue;
     for (int end = 0; end < 2; ++end)
       if (blend.ends[end].given && blend.ends[end].patch.empty()) all.push_back(locate(scene, blend, end));
+    for (LoopBorder& b : blend.fill.borders) {
+      DerivedEnd d;
+      if (locateBorder(scene, blend, b, d)) all.push_back(d);
+    }
   }
   if (all.empty()) return;
   checkRules(all);
   for (DerivedEnd& d : all) {
+    if (d.border && !d.ref->curve) continue;  // an iso-line border: nothing to derive here
     budget.setPath(d.ref->path);
     derive(d);
   }
   for (size_t i = 0; i < all.size();) {
     std::array<const DerivedEnd*, 2> ends = {nullptr, nullptr};
     Patch* blend = all[i].blend;
-    for (; i < all.size() && all[i].blend == blend; ++i) ends[all[i].end] = &all[i];
-    writeConditions(*blend, ends, budget);
+    const bool fill = all[i].border != nullptr;
+    for (; i < all.size() && all[i].blend == blend; ++i)
+      if (!fill) ends[all[i].end] = &all[i];
+    if (!fill) writeConditions(*blend, ends, budget);
   }
-  for (const DerivedEnd& d : all) recordJoin(d, trimOf(all, d.surface) != nullptr);
+  for (const DerivedEnd& d : all) {
+    const bool trimmed = trimOf(all, d.surface) != nullptr;
+    if (d.border) pointBorder(d, trimmed);  // its join is recorded by linkPatches
+    else recordJoin(d, trimmed);
+  }
   for (const DerivedEnd& d : all)
     if (d.ref->curve) {
       budget.setPath(d.ref->path);

@@ -60,6 +60,21 @@ EndReference parseChainEnd(const json& j, const std::string& path, const Resolve
   return e;
 }
 
+}  // namespace
+
+void parseTrimCurve(const json& at, const std::string& path, const Resolver& r, EndReference& e) {
+  allowOnly(at, path, {"t", "replaces"});
+  e.curve = true;
+  e.tau = expressionInV(require(at, "t", path), path + ".t", r);
+  if (at.contains("replaces")) {
+    const std::string s = stringField(at["replaces"], path + ".replaces");
+    if (s != "t0" && s != "t1") fail(ErrorCode::InvalidField, path + ".replaces", "expected \"t0\" or \"t1\"");
+    e.atT1 = s == "t1";
+  }
+}
+
+namespace {
+
 EndReference parseEnd(const json& j, const std::string& path, const Resolver& r, int version) {
   if (j.is_object() && j.contains("patch")) {
     EndReference e = parseChainEnd(j, path, r, version);
@@ -77,14 +92,7 @@ EndReference parseEnd(const json& j, const std::string& path, const Resolver& r,
     if (s != "t0" && s != "t1") fail(ErrorCode::InvalidField, path + ".at", "expected \"t0\", \"t1\" or {\"t\": \"<expression in v>\"}");
     e.atT1 = s == "t1";
   } else if (at.is_object()) {
-    allowOnly(at, path + ".at", {"t", "replaces"});
-    e.curve = true;
-    e.tau = expressionInV(require(at, "t", path + ".at"), path + ".at.t", r);
-    if (at.contains("replaces")) {
-      const std::string s = stringField(at["replaces"], path + ".at.replaces");
-      if (s != "t0" && s != "t1") fail(ErrorCode::InvalidField, path + ".at.replaces", "expected \"t0\" or \"t1\"");
-      e.atT1 = s == "t1";
-    }
+    parseTrimCurve(at, path + ".at", r, e);
   } else {
     fail(ErrorCode::InvalidField, path + ".at", "expected \"t0\", \"t1\" or {\"t\": \"<expression in v>\"}");
   }

@@ -16,5 +16,8 @@ int parseEnds(const json& j, const std::string& path, const Resolver& r, int ver
 Continuity continuityOf(const json& j, const std::string& path);
 // "u0", "u1", "v0", "v1" (kBezierEdge's order), with surfaceNames also "t0", "t1" (as u0, u1).
 int edgeIndex(const std::string& at, const std::string& path, bool surfaceNames);
+// A trimline curve `at` = {"t": "<expression in v>", "replaces": "t0" | "t1"} (default t0):
+// sets e.curve, e.tau and e.atT1 (the border it replaces). path names `at`.
+void parseTrimCurve(const json& at, const std::string& path, const Resolver& r, EndReference& e);
 
 }  // namespace pdesurf::scene_json

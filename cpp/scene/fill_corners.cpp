@@ -31,13 +31,18 @@ std::vector<SideMix> cornerDirections(const std::vector<FillSide>& sides, const 
     const double ve = s.v1 - kInside * (s.v1 - s.v0), vs = next.v0 + kInside * (next.v1 - next.v0);
     const Eigen::Vector3d De = scale[k] * valueAt(s.D, ve), Ds = scale[(k + 1) % n] * valueAt(next.D, vs);
     const Eigen::Vector3d Te = valueAt(s.T, ve), Ts = valueAt(next.T, vs);
+    const double longest = 4 * std::max(De.norm(), Ds.norm());
+    // No corner (a closed border's ends, ranges of one curve): the sides already leave it along
+    // one vector (to the 2 kInside of a side between the two points read). Solving for W there
+    // would divide that difference by a vanishing angle: the loop's data differed across v = 0
+    // by 1e-10 (a G2 cap's seam parted by 5e-12 of the scene).
+    if ((Ds - De).norm() <= 1e-6 * longest && Te.cross(Ts).norm() <= 1e-6 * Te.norm() * Ts.norm() && Te.dot(Ts) > 0) continue;
     // First choice: W where the two sides' lines De + αTe and Ds + βTs cross, so each side keeps
     // its own cross derivative (γ = 1): a corner of any angle short of straight.
     Eigen::Matrix<double, 3, 2> A;
     A << Te, -Ts;
     const Eigen::Vector2d ab = A.colPivHouseholderQr().solve(Ds - De);
     const Eigen::Vector3d W = De + ab(0) * Te;
-    const double longest = 4 * std::max(De.norm(), Ds.norm());
     if (ab.allFinite() && (A * ab - (Ds - De)).norm() <= 1e-6 * longest && W.norm() <= longest) {
       mix[k][3] = ab(0), mix[(k + 1) % n][1] = ab(1);
       continue;

@@ -21,7 +21,17 @@ LoopBorder parseBorder(const json& j, const std::string& path, const Resolver& r
   LoopBorder b;
   b.path = path;
   b.patch = stringField(require(j, "patch", path), path + ".patch", 64);
-  b.edge = edgeIndex(stringField(require(j, "at", path), path + ".at"), path + ".at", true);
+  const json& at = require(j, "at", path);
+  if (at.is_object()) {
+    // A surface's trimline curve: checked and trimmed with the blends' ends (deriveEnds).
+    b.curve.given = true;
+    b.curve.surface = b.patch;
+    b.curve.path = path;
+    parseTrimCurve(at, path + ".at", r, b.curve);
+    b.curve.power = constant(1.0);
+  } else {
+    b.edge = edgeIndex(stringField(at, path + ".at"), path + ".at", true);
+  }
   if (j.contains("range")) {
     const auto range = r.range(j, "range", path, 0.0, 1.0);
     b.from = range[0], b.to = range[1];
@@ -57,6 +67,7 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
          "a fill closes 1 (a closed border) to " + std::to_string(kMaxSides) + " borders; this one has " + std::to_string(borders.size()));
   for (size_t k = 0; k < borders.size(); ++k) fill.borders.push_back(parseBorder(borders[k], path + ".borders[" + std::to_string(k) + "]", r));
   if (j.contains("continuity")) fill.continuity = continuityOf(j["continuity"], path + ".continuity");
+  for (LoopBorder& b : fill.borders) b.curve.continuity = fill.continuity;  // what the trimline's checks ask
   if (j.contains("centre")) fill.centreGiven = true, fill.centre = vectorField(j["centre"], path + ".centre", r);
   if (j.contains("normal")) {
     fill.normalGiven = true;

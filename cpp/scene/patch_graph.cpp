@@ -82,6 +82,7 @@ void linkFill(Scene& scene, size_t index) {
     m.end = 0;
     m.atT1 = b.edge % 2 == 1;
     m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
+    m.curve = b.curve.curve, m.replacesT1 = b.curve.curve && b.curve.atT1;  // for the certificate's label
     m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
     const auto part = fillSideRange(k, n);
     m.targetFrom = part[0], m.targetTo = part[1];

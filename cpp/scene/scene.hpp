@@ -42,6 +42,7 @@ struct PrimarySurface {
   // (null otherwise); blend ends by reference are derived from it (scene/derived_ends.hpp).
   std::array<Expr, 3> full;
   bool trimmed = false;  // reparametrised by a curve trimline: t0 = 0 is the trimline
+  bool trimReplacesT1 = false;  // trimmed: the border the curve replaces (t1, else t0)
   // A trimmed surface's pointwise expression with its partial derivatives (X, X_t, X_v, X_tt,
   // X_tv, X_vv), built under the scene's budget when it is trimmed; empty otherwise.
   std::array<std::vector<Expr>, 3> pointwisePartials;
@@ -130,6 +131,11 @@ struct LoopBorder {
   bool reverse = false;
   Expr power;            // a number (parameters folded in); 1 when not given
   std::string path;      // "patches[3].borders[1]", for errors
+  // A surface's trimline curve, `"at": {"t": tau(v), "replaces": "t0" | "t1"}` (curve.given):
+  // deriveEnds checks it and trims the surface along it as for a blend's end, and edge becomes
+  // 0, the curve in the drawn parametrisation. A surface's t0/t1 always name its own borders:
+  // on a trimmed surface, the one not replaced is its drawn edge 1.
+  EndReference curve;
 };
 
 // Version 4, kind "fill" (docs/chains-and-fills.md): a pde patch that closes a loop of N borders of other

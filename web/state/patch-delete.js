@@ -31,7 +31,7 @@ export function dependentsOf(scene, name) {
       if (ends.length) out.push({ patch: p.name, kind: 'chain', ends });
     }
     if (p.kind === 'fill' && Array.isArray(p.borders)) {
-      const edges = p.borders.filter((b) => isObject(b) && b.patch === name).map((b) => String(b.at));
+      const edges = p.borders.filter((b) => isObject(b) && b.patch === name).map((b) => (isObject(b.at) ? `curve replacing ${b.at.replaces ?? 't0'}` : String(b.at)));
       if (edges.length) out.push({ patch: p.name, kind: 'loop', edges });
     }
   }
