@@ -7,7 +7,7 @@ import { buildBuildFolder } from './ui/build-controls.js';
 import { buildOutliner } from './ui/outliner.js';
 import { buildPlacementFolder } from './ui/placement-controls.js';
 import { addSurface, libraryEntry } from './state/surface-library.js';
-import { addBlend, addFill, addLoopFill } from './state/scene-join.js';
+import { addBlend, addFill, addLoopFill, bordersOfPatch } from './state/scene-join.js';
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
 import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
 import { messageOf } from './state/document.js';
@@ -89,10 +89,14 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
 
   function makeFill(borders, options = {}) {
     const list = viewer.borders.list();
-    const endpoints = borders.map((b) => list.find((d) => d.patch === b.surface && d.border === b.at)?.endpoints);
+    const drawnBorders = borders.map((b) => list.find((d) => d.patch === b.surface && d.border === b.at));
+    const endpoints = drawnBorders.map((d) => d?.endpoints);
+    // Ends closer than 1e-3 of the borders' size meet (float32 vertices: a closed border's two
+    // ends may differ in the last digit).
+    const tolerance = 1e-3 * Math.max(0, ...drawnBorders.map((d) => d?.extent ?? 0));
     const r = build('fill', (s) => {
       if (endpoints.some((e) => !e)) throw new Error('a border that is not drawn yet cannot be filled: wait for the solve');
-      return options.kind === 'pde' ? addLoopFill(s.scene, borders, endpoints, { continuity: options.continuity }) : addFill(s.scene, borders, endpoints);
+      return options.kind === 'pde' ? addLoopFill(s.scene, borders, endpoints, { continuity: options.continuity, tolerance }) : addFill(s.scene, borders, endpoints, { tolerance });
     }, { checked: true, said: (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}` });
     folder.clearChoices();
     viewer.borders.highlight([]);
@@ -107,7 +111,11 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       viewer.borders.highlight([]);
       return;
     }
+    // Every drawn border may be picked, but a Bézier fill's lie on surfaces (its rings of
+    // control points are derived from them): while one is being made, only theirs.
+    const kindOf = (name) => (state.scene?.patches || []).find((p) => p && p.name === name)?.kind;
     viewer.borders.enable({
+      filter: (patch) => !(pickMode === 'fill' && folder.fillOptions().kind === 'bezier') || !['pde', 'bezier'].includes(kindOf(patch)),
       onPick: (pick) => {
         const border = { surface: pick.patch, at: pick.border };
         const chosen = folder.picked(pickMode, border);
@@ -159,8 +167,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
 
   function refresh() {
     const scene = state.scene;
-    const surfaces = surfacesOf(scene);
-    folder.setBorders(surfaces.flatMap((p) => [{ surface: p.name, at: 't0' }, { surface: p.name, at: 't1' }]));
+    // Every border a blend or a fill can meet: surfaces' t0/t1, pde patches' ends, Bézier borders.
+    const patches = (scene?.patches || []).filter(Boolean);
+    folder.setBorders(patches.flatMap((p) => bordersOfPatch(p).map((at) => ({ surface: p.name, at }))));
     outliner.show((scene?.patches || []).filter(Boolean), (n) => dependentsOf(scene, n).map((d) => d.patch), unusedParameters(scene));
     outliner.select(doc.selection());
   }

@@ -87,7 +87,7 @@ test('screenProjector: client pixels of the canvas, null behind a perspective ca
   assert.equal(p(0, 0, 10), null); // at the eye
 });
 
-test('bordersOf: t0 is the grid column i = 0, t1 the column i = nu, from v0 to v1; blends have none', () => {
+test('bordersOf: t0 is the grid column i = 0, t1 the column i = nu, from v0 to v1; a pde patch offers u0, u1, a Bézier patch four, a fill none', () => {
   const nu = 4, nv = 3;
   const { uvs, indices } = gridTopology(nu, nv);
   // S(t, v) = (t, v, 0) sampled at t = i/nu, v = j/nv.
@@ -102,9 +102,15 @@ test('bordersOf: t0 is the grid column i = 0, t1 the column i = nu, from v0 to v
     assert.deepEqual([...t0.points.subarray(3 * j, 3 * j + 3)], [0, Math.fround(j / nv), 0]);
     assert.deepEqual([...t1.points.subarray(3 * j, 3 * j + 3)], [1, Math.fround(j / nv), 0]);
   }
-  assert.deepEqual(pickOf(t1), { patch: 'plane', border: 't1', endpoints: [[1, 0, 0], [1, 1, 0]] });
-  assert.deepEqual(bordersOf({ ...patch, kind: 'pde' }), []);
-  assert.deepEqual(bordersOf({ ...patch, kind: 'bezier' }), []);
+  assert.deepEqual(pickOf(t1), { patch: 'plane', border: 't1', endpoints: [[1, 0, 0], [1, 1, 0]], extent: 1 });
+  // A pde patch's ends are the same columns; a Bézier patch's v0 and v1 are the rows j = 0, nv.
+  const pde = bordersOf({ ...patch, name: 'blend', kind: 'pde' });
+  assert.deepEqual(pde.map((b) => b.border), ['u0', 'u1']);
+  assert.deepEqual([...pde[1].points], [...t1.points]);
+  const bezier = bordersOf({ ...patch, name: 'net', kind: 'bezier' });
+  assert.deepEqual(bezier.map((b) => b.border), ['u0', 'u1', 'v0', 'v1']);
+  assert.deepEqual(pickOf(bezier[3]), { patch: 'net', border: 'v1', endpoints: [[0, 1, 0], [1, 1, 0]], extent: 1 });
+  assert.deepEqual(bordersOf({ ...patch, kind: 'fill' }), []);
 });
 
 const close = (a, b, eps = 1e-9) => a.every((x, k) => Math.abs(x - b[k]) <= eps);

@@ -10,7 +10,7 @@ import * as THREE from 'three';
 import { loadTestSolver } from './test-solver.mjs';
 import {
   newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter,
-  setPlacement, placePoint, addBlend, addFill, trigCurveFromSamples, addSurface, lowestVersion,
+  setPlacement, placePoint, addBlend, addFill, addLoopFill, trigCurveFromSamples, addSurface, lowestVersion,
 } from '../../web/state/scene-build.js';
 import { compile, parameterValues } from '../../web/state/expr-text.js';
 import { check, refuses } from './build-helpers.mjs';
@@ -307,7 +307,7 @@ describe('blends', () => {
     refuses(scene, () => addBlend(scene, { surface: 'cylinder1', at: 't1' }, { surface: 'cylinder1', at: 't1' }), /^u1\.at: both ends meet t1 of "cylinder1"/);
     refuses(scene, () => addBlend(scene, { surface: 'cylinder1', at: { t: '2', replaces: 't1' } }, { surface: 'cylinder1', at: 't1' }), /both ends meet t1/);
     refuses(scene, () => addBlend(scene, { surface: 'nope', at: 't0' }, { surface: 'cylinder1', at: 't1' }), /^u0\.surface: there is no patch named "nope"/);
-    refuses(scene, () => addBlend(scene, { surface: 'blend1', at: 't0' }, { surface: 'cylinder1', at: 't1' }), /^u0\.surface: "blend1" is a pde patch/);
+    refuses(scene, () => addBlend(scene, { surface: 'blend1', at: 't0' }, { surface: 'cylinder1', at: 't1' }), /^u0\.at: "blend1" is a pde patch: its ends are u0, u1, not "t0"/);
     refuses(scene, () => addBlend(scene, { surface: 'annulus1', at: 't2' }, { surface: 'cylinder1', at: 't1' }), /^u0\.at: must be "t0", "t1"/);
     refuses(scene, () => addBlend(scene, { surface: 'annulus1', at: { t: 't+1' } }, { surface: 'cylinder1', at: 't1' }), /^u0\.at\.t: col 1: 't' cannot be used here/);
     refuses(scene, () => addBlend(scene, { surface: 'annulus1', at: 't1' }, { surface: 'cylinder1', at: 't1' }, { continuity: 'smooth' }), /^u0\.continuity: must be position/);
@@ -383,6 +383,63 @@ describe('fills', () => {
     addFill(scene, borders, borders.map((b) => borderEnds(scene, b.surface, b.at)));
     const { status, stderr } = check(scene);
     assert.equal(status, 0, stderr);
+  });
+});
+
+describe('PDE ends and Bézier borders as picks (issue 35)', () => {
+  // A vase: a pde tube with typed ends (radius 1 at z = 0 to radius 0.6 at z = 2), open at the
+  // top; a flat ring above it and a rim of radius 0.6 at z = 2.5.
+  function vase() {
+    const scene = newScene();
+    scene.version = 4;
+    scene.patches.push({
+      name: 'vase', kind: 'pde', v_range: [0, '2*pi'], operator: { order: 4, b: 1, c: 2, d: 1 },
+      boundary: {
+        x: { u0: ['cos(v)', '0'], u1: ['0.6*cos(v)', '0'] },
+        y: { u0: ['sin(v)', '0'], u1: ['0.6*sin(v)', '0'] },
+        z: { u0: ['0', '2'], u1: ['2', '2'] },
+      },
+    });
+    scene.patches.push({ name: 'rim', kind: 'surface', t_range: [0, 0.5], v_range: [0, '2*pi'], x: '0.6*cos(v)', y: '0.6*sin(v)', z: '2.5 + t' });
+    return scene;
+  }
+  const top = [[0.6, 0, 2], [0.6, 0, 2]]; // the vase's u1 at v = 0 and 2π
+
+  it('a fill of a pde end: {patch, at} in the loop, certified by the core', () => {
+    const scene = vase();
+    const name = addLoopFill(scene, [{ surface: 'vase', at: 'u1' }], [top]);
+    assert.deepEqual(scene.patches.at(-1), { name, kind: 'fill', borders: [{ patch: 'vase', at: 'u1' }] });
+    const { status, report, stderr } = check(scene);
+    assert.equal(status, 0, stderr);
+    const joins = report.joins.filter((j) => j.patch === name);
+    assert.equal(joins.length, 1);
+    assert.ok(joins.every((j) => j.ok && j.level === 'G1'), JSON.stringify(joins));
+  });
+
+  it('a blend from a pde end to a surface: a chained end with the pde patch\'s v_range, certified', () => {
+    const scene = vase();
+    const name = addBlend(scene, { surface: 'vase', at: 'u1' }, { surface: 'rim', at: 't0' }, { continuity: 'tangency', power: 0.5 });
+    const blend = scene.patches.find((p) => p.name === name);
+    assert.deepEqual(blend.ends.u0, { patch: 'vase', at: 'u1', continuity: 'tangency', power: 0.5 });
+    assert.deepEqual(blend.ends.u1, { surface: 'rim', at: 't0', continuity: 'tangency', power: 0.5 });
+    assert.deepEqual(blend.v_range, [0, '2*pi']);
+    const { status, report, stderr } = check(scene);
+    assert.equal(status, 0, stderr);
+    assert.ok(report.joins.filter((j) => j.patch === name).every((j) => j.ok && j.level === 'G1'));
+  });
+
+  it('refuses a fill as a border, a pde patch\'s t0, a Bézier fill of pde ends, an expression power on a chain', () => {
+    const scene = vase();
+    addLoopFill(scene, [{ surface: 'vase', at: 'u1' }], [top]);
+    refuses(scene, () => addLoopFill(scene, [{ surface: 'fill1', at: 'u0' }], [top]), /^borders\[0\]\.surface: "fill1" is a fill: its border belongs to the patches it closes/);
+    refuses(scene, () => addLoopFill(scene, [{ surface: 'vase', at: 't1' }], [top]), /^borders\[0\]\.at: "vase" is a pde patch: its ends are u0, u1, not "t1"/);
+    refuses(scene, () => addFill(scene, [0, 1, 2, 3].map(() => ({ surface: 'vase', at: 'u1' })), [top, top, top, top]),
+      /^borders\[0\]\.surface: "vase" is a pde patch; a Bézier fill's borders lie on "surface" patches/);
+    refuses(scene, () => addBlend(scene, { surface: 'vase', at: 'u1' }, { surface: 'rim', at: 't0' }, { power: 'v' }), /^u0\.power: an end on a patch takes a number/);
+    refuses(scene, () => addBlend(scene, { surface: 'vase', at: 'u1' }, { surface: 'rim', at: 't0' }, { power: -1 }), /^u0\.power: must be positive/);
+    refuses(scene, () => addBlend(scene, { surface: 'vase', at: 'u1' }, { surface: 'vase', at: 'u1' }), /^u1\.at: both ends meet u1 of "vase"/);
+    scene.patches.find((p) => p.name === 'rim').v_range = [0, 3];
+    refuses(scene, () => addBlend(scene, { surface: 'vase', at: 'u1' }, { surface: 'rim', at: 't0' }), /^v_range: "vase" has v in \[0,"2\*pi"\] and "rim" in \[0,3\]/);
   });
 });
 

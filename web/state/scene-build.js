@@ -3,7 +3,7 @@
 // JSON, exactly what the solver reads); each validates first and throws an Error naming the
 // field, so a refused edit leaves the scene as it was.
 // Also here (split for size): surface-library.js (addSurface), scene-join.js (addBlend,
-// addFill), patch-delete.js (dependentsOf, deletePatch), placement.js (setPlacement),
+// addFill, addLoopFill), patch-delete.js (dependentsOf, deletePatch), placement.js (setPlacement),
 // trig-curve.js (trigCurveFromSamples).
 import { isObject, patchesOf, requirePatch, checkNewPatchName, findPatch, parameterPrefix, uniqueParameterName } from './patch-names.js';
 import { namesIn, replaceNames } from './expr-text.js';
@@ -11,7 +11,7 @@ import { existingEnds, checkEndRules } from './scene-join.js';
 
 export { dependentsOf, deletePatch } from './patch-delete.js';
 export { setPlacement, placePoint } from './placement.js';
-export { addBlend, addFill } from './scene-join.js';
+export { addBlend, addFill, addLoopFill } from './scene-join.js';
 export { trigCurveFromSamples } from './trig-curve.js';
 export { addSurface, SURFACE_LIBRARY } from './surface-library.js';
 

@@ -1,6 +1,10 @@
-// Joining surfaces: a PDE blend between two picked borders (ends by reference,
-// docs/blends-by-reference.md) and a Bézier fill bounded by four picked borders (the
-// version-4 `borders` field). Both validate everything first, then change the scene.
+// Joining patches: a PDE blend between two picked borders (ends by reference to a surface,
+// docs/blends-by-reference.md, or continuing a pde patch's end or a Bézier border, a chain), a
+// Bézier fill bounded by four picked surface borders (the version-4 `borders` field) and a PDE
+// fill of a loop of 1 to 8 borders of any kind (docs/chains-and-fills.md). A pick is
+// { surface, at }: `surface` names the patch the border belongs to (a surface, a pde patch or a
+// Bézier patch) and `at` the border (t0/t1, u0/u1, u0/u1/v0/v1). All validate everything
+// first, then change the scene.
 import { isObject, patchesOf, findPatch, checkNewPatchName, uniquePatchName } from './patch-names.js';
 import { checkExpression, numberField, namesIn } from './expr-text.js';
 import { CONTINUITIES, ISO_LINES } from './ends-edit.js';
@@ -22,6 +26,32 @@ function surfaceOf(scene, name, path) {
 }
 
 const vRangeOf = (p) => (Array.isArray(p.v_range) ? p.v_range : DEFAULT_V_RANGE);
+
+const PRIMARY_BORDERS = ['t0', 't1'];
+const PDE_ENDS = ['u0', 'u1'];
+const isPrimary = (p) => p.kind !== 'pde' && p.kind !== 'bezier' && p.kind !== 'fill';
+
+/** The borders a patch offers to blends and fills: a surface's t0/t1, a pde patch's ends, a Bézier patch's four edges; a fill none. */
+export function bordersOfPatch(p) {
+  if (!isObject(p) || p.kind === 'fill') return [];
+  if (p.kind === 'pde') return PDE_ENDS;
+  if (p.kind === 'bezier') return ['u0', 'u1', 'v0', 'v1'];
+  return PRIMARY_BORDERS;
+}
+
+/** The patch a pick names and its border, checked: throws naming `path`. */
+function borderOf(scene, pick, path) {
+  if (!isObject(pick)) throw new Error(`${path}: expected { surface, at }`);
+  const p = findPatch(scene, pick.surface);
+  if (!p) throw new Error(`${path}.surface: there is no patch named ${JSON.stringify(String(pick.surface))}`);
+  if (p.kind === 'fill') throw new Error(`${path}.surface: ${JSON.stringify(p.name)} is a fill: its border belongs to the patches it closes`);
+  const offered = bordersOfPatch(p);
+  if (!offered.includes(pick.at)) {
+    const what = p.kind === 'pde' ? 'a pde patch: its ends are' : p.kind === 'bezier' ? 'a Bézier patch: its borders are' : 'a surface: its borders are';
+    throw new Error(`${path}.at: ${JSON.stringify(p.name)} is ${what} ${offered.join(', ')}, not ${JSON.stringify(pick.at)}`);
+  }
+  return p;
+}
 const squeeze = (x) => String(x).replace(/\s+/g, '');
 
 /** Same v_range: the same texts, or the same numbers when neither uses a parameter (which a slider could move apart). */
@@ -76,6 +106,8 @@ export function checkEndRules(ends) {
 
 function endField(scene, pick, opts, path) {
   if (!isObject(pick)) throw new Error(`${path}: expected { surface, at }`);
+  const p = findPatch(scene, pick.surface);
+  if (p && (p.kind === 'pde' || p.kind === 'bezier')) return chainField(scene, pick, opts, path);
   surfaceOf(scene, pick.surface, path);
   const at = checkAt(scene, pick.at, path);
   const continuity = pick.continuity ?? opts.continuity ?? 'tangency';
@@ -90,6 +122,36 @@ function endField(scene, pick, opts, path) {
   return out;
 }
 
+/** An end continuing a pde patch's end or a Bézier border (a chain): its power is a number. */
+function chainField(scene, pick, opts, path) {
+  borderOf(scene, pick, path);
+  const continuity = pick.continuity ?? opts.continuity ?? 'tangency';
+  if (!CONTINUITIES.includes(continuity)) throw new Error(`${path}.continuity: must be ${CONTINUITIES.join(', ')}, not ${JSON.stringify(continuity)}`);
+  const power = pick.power ?? opts.power ?? 1;
+  if (typeof power !== 'number') throw new Error(`${path}.power: an end on a patch takes a number`);
+  if (!(numberField(scene, power, `${path}.power`) > 0)) throw new Error(`${path}.power: must be positive`);
+  return { patch: pick.surface, at: pick.at, continuity, power };
+}
+
+/**
+ * The blend's v_range: a chain shares v with the pde patch it continues, an end by reference
+ * lies on its surface's v (both the same range); a Bézier border's [0, 1] runs over the
+ * blend's v_range, which is then the other end's (or [0, 1]).
+ */
+function blendRange(scene, u0, u1) {
+  const rangeOf = (e) => {
+    if (e.surface !== undefined) return vRangeOf(findPatch(scene, e.surface));
+    const p = findPatch(scene, e.patch);
+    return p.kind === 'pde' ? vRangeOf(p) : null;
+  };
+  const [ra, rb] = [rangeOf(u0), rangeOf(u1)];
+  const label = (e) => JSON.stringify(e.surface ?? e.patch);
+  if (ra && rb && !sameRange(scene, ra, rb)) {
+    throw new Error(`v_range: ${label(u0)} has v in ${JSON.stringify(ra)} and ${label(u1)} in ${JSON.stringify(rb)}; a blend shares v with both, so they must be the same`);
+  }
+  return [...(ra ?? rb ?? [0, 1])];
+}
+
 /**
  * Add a PDE blend from border `a` (its u0) to border `b` (its u1), each
  * { surface, at: 't0' | 't1' | { t, replaces } } (optionally its own continuity, power, flip).
@@ -101,19 +163,18 @@ export function addBlend(scene, a, b, options = {}) {
   const u0 = endField(scene, a, options, 'u0');
   const u1 = endField(scene, b, options, 'u1');
   const border = (e) => (isObject(e.at) ? e.at.replaces : e.at);
-  if (u0.surface === u1.surface && border(u0) === border(u1)) {
-    throw new Error(`u1.at: both ends meet ${border(u0)} of ${JSON.stringify(u0.surface)}: the blend would start and end on the same curve`);
+  const owner = (e) => e.surface ?? e.patch;
+  if (owner(u0) === owner(u1) && border(u0) === border(u1)) {
+    throw new Error(`u1.at: both ends meet ${border(u0)} of ${JSON.stringify(owner(u0))}: the blend would start and end on the same curve`);
   }
-  const ra = vRangeOf(findPatch(scene, u0.surface)), rb = vRangeOf(findPatch(scene, u1.surface));
-  if (!sameRange(scene, ra, rb)) {
-    throw new Error(`v_range: ${JSON.stringify(u0.surface)} has v in ${JSON.stringify(ra)} and ${JSON.stringify(u1.surface)} in ${JSON.stringify(rb)}; a blend shares v with both, so they must be the same`);
-  }
+  const range = blendRange(scene, u0, u1);
   const name = options.name ?? uniquePatchName(scene, 'blend');
   checkNewPatchName(scene, name);
-  const mine = [u0, u1].map((e, k) => ({ surface: e.surface, border: border(e), curve: isObject(e.at), where: `${name}.u${k}` }));
+  const mine = [u0, u1].filter((e) => e.surface !== undefined)
+    .map((e) => ({ surface: e.surface, border: border(e), curve: isObject(e.at), where: `${name}.${e === u0 ? 'u0' : 'u1'}` }));
   checkEndRules([...existingEnds(scene), ...mine]);
   raiseVersion(scene);
-  scene.patches.push({ name, kind: 'pde', v_range: [...ra], ends: { u0, u1 } });
+  scene.patches.push({ name, kind: 'pde', v_range: range, ends: { u0, u1 } });
   return name;
 }
 
@@ -123,13 +184,22 @@ function checkPoint(p, path) {
   if (!Array.isArray(p) || p.length !== 3 || !p.every(Number.isFinite)) throw new Error(`${path}: expected a point [x, y, z] of finite numbers`);
 }
 
-/** Picked borders of a fill: surfaces' t0/t1, each once, each with its two drawn ends. */
-function checkPicks(scene, borders, endpoints) {
+/**
+ * Picked borders of a fill, each once, each with its two drawn ends: a Bézier fill's are
+ * "surface" patches' t0/t1 (its rings of control points are derived from them); a PDE fill
+ * takes any patch's border (`anyKind`).
+ */
+function checkPicks(scene, borders, endpoints, anyKind = false) {
   const seen = new Set();
   borders.forEach((b, k) => {
     if (!isObject(b)) throw new Error(`borders[${k}]: expected { surface, at }`);
-    surfaceOf(scene, b.surface, `borders[${k}]`);
-    if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
+    if (anyKind) borderOf(scene, b, `borders[${k}]`);
+    else {
+      const p = findPatch(scene, b.surface);
+      if (p && !isPrimary(p)) throw new Error(`borders[${k}].surface: ${JSON.stringify(p.name)} is a ${p.kind} patch; a Bézier fill's borders lie on "surface" patches (a PDE fill takes any border)`);
+      surfaceOf(scene, b.surface, `borders[${k}]`);
+      if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
+    }
     const key = JSON.stringify([b.surface, b.at]);
     if (seen.has(key)) throw new Error(`borders[${k}]: ${b.at} of ${JSON.stringify(b.surface)} is picked twice`);
     seen.add(key);
@@ -217,7 +287,8 @@ export function addFill(scene, borders, endpoints, options = {}) {
 
 /**
  * Add a PDE fill (kind "fill", docs/chains-and-fills.md) closing a loop of 1 to 8 picked
- * borders ({ surface, at: 't0' | 't1' }, in any order; one border must be a closed curve),
+ * borders ({ surface, at }: a surface's t0/t1, a pde patch's u0/u1 or a Bézier border, in any
+ * order; one border must be a closed curve),
  * G1 to each with a regular centre. endpoints[k] = [start, end] as for addFill; the loop's
  * order and each border's direction are found from them. options: { continuity: 'tangency'
  * (or 'position', 'curvature'), tolerance, name }. Returns the fill's name.
@@ -225,7 +296,7 @@ export function addFill(scene, borders, endpoints, options = {}) {
 export function addLoopFill(scene, borders, endpoints, options = {}) {
   if (!Array.isArray(borders) || borders.length < 1 || borders.length > 8) throw new Error('borders: expected 1 to 8 borders');
   if (!Array.isArray(endpoints) || endpoints.length !== borders.length) throw new Error('endpoints: expected the two ends of each border');
-  checkPicks(scene, borders, endpoints);
+  checkPicks(scene, borders, endpoints, true);
   const continuity = options.continuity ?? 'tangency';
   if (!CONTINUITIES.includes(continuity)) throw new Error(`continuity: must be ${CONTINUITIES.join(', ')}, not ${JSON.stringify(continuity)}`);
   const tol = options.tolerance ?? 1e-3 * loopSize(endpoints);

@@ -1,8 +1,9 @@
-// Picking a border of a primary surface in the 3D view: hovering draws the border under
-// the pointer, a click (or a tap) picks it. A surface S(t, v) is drawn on a grid whose
-// vertex (i, j) is at j*(nu+1)+i with i along t (u) and j along v (web/viewer/grid-topology.js),
-// so its border t0 is the column i = 0 and t1 the column i = nu, each running from v0 (j = 0)
-// to v1 (j = nv).
+// Picking a border in the 3D view: hovering draws the border under the pointer, a click (or
+// a tap) picks it. Every patch is drawn on a grid whose vertex (i, j) is at j*(nu+1)+i with i
+// along t or u and j along v (web/viewer/grid-topology.js): a surface's border t0 is the
+// column i = 0 and t1 the column i = nu, each running from v0 (j = 0) to v1 (j = nv); a pde
+// patch's ends u0 and u1 are the same columns; a Bézier patch also offers its rows v0, v1.
+// A fill offers none (its border belongs to the patches it closes).
 // The hit test is in screen space (the distance in CSS pixels from the pointer to the
 // projected polylines), so a thin border far away is as easy to hit as a near one, and it
 // needs no raycast against the meshes. Hovering only draws: it never changes the scene.
@@ -21,15 +22,22 @@ const HOVER_WIDTH = 4;
 const CHOSEN_WIDTH = 3;
 export const BORDERS = ['t0', 't1'];
 
-/** Blends (pde, bezier) have no borders to pick; every other kind is a primary surface. */
+/** Every kind but pde, bezier and fill is a primary surface. */
 export const isSurfaceKind = (kind) => kind !== 'pde' && kind !== 'bezier' && kind !== 'fill';
 
-/** The borders of one solved patch: [{ patch, border, points (flat xyz, v0 to v1) }]. */
+// A border's name -> its grid line (boundaryLine's side).
+const GRID_SIDE = { t0: 'u0', t1: 'u1', u0: 'u0', u1: 'u1', v0: 'v0', v1: 'v1' };
+function namesOf(kind) {
+  if (kind === 'fill') return [];
+  if (kind === 'pde') return ['u0', 'u1'];
+  if (kind === 'bezier') return ['u0', 'u1', 'v0', 'v1'];
+  return BORDERS;
+}
+
+/** The borders of one solved patch: [{ patch, border, points (flat xyz, along its grid line) }]. */
 export function bordersOf(patch) {
-  if (!isSurfaceKind(patch.kind) || !patch.uvs || patch.positions.length < 6) return [];
-  return BORDERS.map((border) => ({
-    patch: patch.name, border, points: boundaryLine(patch, border === 't0' ? 'u0' : 'u1'),
-  }));
+  if (!patch.uvs || patch.positions.length < 6) return [];
+  return namesOf(patch.kind).map((border) => ({ patch: patch.name, border, points: boundaryLine(patch, GRID_SIDE[border]) }));
 }
 
 /** Distance from (px, py) to the segment a-b and where along it (0..1) the nearest point is. */
@@ -72,11 +80,21 @@ export function nearestBorder(borders, projectFn, x, y, radius) {
   }
 }
 
-/** The pick the callbacks receive: { patch, border, endpoints: [[x, y, z] at v0, at v1] }. */
+/**
+ * The pick the callbacks receive: { patch, border, endpoints: [[x, y, z] at its start, at its
+ * end], extent: the diagonal of its points' bounding box (a closed border's ends meet: its size
+ * is not theirs) }.
+ */
 export function pickOf(entry) {
   const p = entry.points;
   const n = p.length;
-  return { patch: entry.patch, border: entry.border, endpoints: [[p[0], p[1], p[2]], [p[n - 3], p[n - 2], p[n - 1]]] };
+  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  for (let k = 0; k < n; k++) {
+    lo[k % 3] = Math.min(lo[k % 3], p[k]);
+    hi[k % 3] = Math.max(hi[k % 3], p[k]);
+  }
+  const extent = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  return { patch: entry.patch, border: entry.border, endpoints: [[p[0], p[1], p[2]], [p[n - 3], p[n - 2], p[n - 1]]], extent };
 }
 
 /** projectFn for nearestBorder: world point -> client pixels of `dom`, null behind the camera. */
@@ -200,7 +218,7 @@ export function createBorderPicker({ camera, dom, render, overlays, busy = () =>
     /**
      * Start picking: filter(patchName, border) -> whether that border may be picked;
      * onHover(pick | null) when the border under the pointer changes; onPick(pick) on a
-     * click or tap. pick: { patch, border: 't0' | 't1', endpoints: [[x, y, z] at v0, at v1] }.
+     * click or tap. pick: { patch, border: 't0' | 't1' | 'u0' | 'u1' | 'v0' | 'v1', endpoints: [[x, y, z] at its start, at its end] }.
      */
     enable({ filter = () => true, onHover = () => {}, onPick = () => {} } = {}) {
       active = { filter, onHover, onPick };
