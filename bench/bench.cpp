@@ -90,11 +90,17 @@ std::pair<double, double> fullAndReused(const BezierProblem& p) {
 namespace pdesurf {
 double benchMedianSeconds(const std::function<void()>& f) { return medianSeconds(f); }
 void benchModels(const std::string& dir);  // bench/models_bench.cpp
+void benchFills(const std::string& dir, const char* file);
 void benchCad(const std::string& dir);     // bench/cad_bench.cpp
 }  // namespace pdesurf
 
-int main() {
+int main(int argc, char** argv) {
   platform::retainFreedMemory();  // as the CLI does: native rows measure the solver, not page faults
+  // `pdesurf_bench fills`: only the fills' section (a quick look while working on them).
+  if (argc > 1 && std::string(argv[1]) == "fills") {
+    for (const char* f : {"you2004-fig8c.json", "you2004-fig8d.json"}) benchFills(PDESURF_EXAMPLES_DIR, f);
+    return 0;
+  }
 #ifdef __EMSCRIPTEN__
   const char* target = "wasm (node)";
 #else

@@ -19,6 +19,16 @@ double GeneralFunction::eval(double v, int k) const {
   return evaluate(*derivativeExpr(k), vars);
 }
 
+void GeneralFunction::evalMany(const double* v, size_t n, int k, double* out) const {
+  if (k > 2) {
+    for (size_t i = 0; i < n; ++i) out[i] = eval(v[i], k);
+    return;
+  }
+  if (static_cast<int>(programs_.size()) <= k) programs_.resize(k + 1);
+  if (!programs_[k]) programs_[k] = std::make_shared<const ExprProgram>(std::vector<Expr>{derivativeExpr(k)});
+  programs_[k]->run(v, nullptr, n, out);
+}
+
 const Expr& GeneralFunction::derivativeExpr(int k) const {
   while (static_cast<int>(derivs_.size()) <= k) {
     const std::string what = "'" + clipText(text_, 200) + "': its derivative of order " + std::to_string(derivs_.size()) + " would";

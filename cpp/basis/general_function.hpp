@@ -8,6 +8,7 @@
 
 #include "basis/vfunction.hpp"
 #include "expr/expr.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 
@@ -22,6 +23,10 @@ class GeneralFunction {
   VFunction origin;
   // d^k g / dv^k at v; NaN or inf where the expression is not finite (callers check).
   double eval(double v, int k) const;
+  // The same at v[0..n) into out: for k <= 2 one compiled program over all the points (each
+  // shared node once per point, each instruction across the points), which is what a Fourier
+  // projection or a grid needs; a fill's loop is a graph of thousands of nodes.
+  void evalMany(const double* v, size_t n, int k, double* out) const;
   // d^k g / dv^k as an expression, built on first use under the derivative budget (throws
   // Error(TooLarge) when one order would exceed it).
   const Expr& derivativeExpr(int k) const;
@@ -29,6 +34,7 @@ class GeneralFunction {
  private:
   std::string text_;
   mutable std::vector<Expr> derivs_;  // derivs_[k] = k-th derivative, grown on demand
+  mutable std::vector<std::shared_ptr<const ExprProgram>> programs_;  // programs_[k] runs derivs_[k]
 };
 
 }  // namespace pdesurf

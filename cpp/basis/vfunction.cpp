@@ -8,6 +8,31 @@
 
 namespace pdesurf {
 
+void VFunction::evalMany(const double* v, size_t n, int k, double* out) const {
+  if (family == Family::General) return general->evalMany(v, n, k, out);
+  for (size_t i = 0; i < n; ++i) out[i] = eval(v[i], k);
+}
+
+void VFunction::evalUpTo(double v, int maxK, double* out) const {
+  if (family != Family::Cos && family != Family::Sin) {
+    for (int k = 0; k <= maxK; ++k) out[k] = eval(v, k);
+    return;
+  }
+  // One cosine and one sine for every order (what eval would compute, term for term).
+  const double a = w * v;
+  trigUpTo(std::cos(a), std::sin(a), maxK, out);
+}
+
+void VFunction::trigUpTo(double c, double sn, int maxK, double* out) const {
+  double wk = 1.0;
+  for (int k = 0; k <= maxK; ++k) {
+    if (k >= 3) wk = std::pow(w, k);
+    const int turn = (k + (family == Family::Sin ? 3 : 0)) % 4;
+    out[k] = turn == 0 ? wk * c : turn == 1 ? -wk * sn : turn == 2 ? -wk * c : wk * sn;
+    if (k < 2) wk = k == 0 ? w : w * w;
+  }
+}
+
 double VFunction::eval(double v, int k) const {
   if (family == Family::General) return general->eval(v, k);
   if (family == Family::Bernstein) return bernsteinBasis(degree, n, v, k);
@@ -20,7 +45,7 @@ double VFunction::eval(double v, int k) const {
     return factor * power;
   }
   const double a = w * v;
-  const double wk = std::pow(w, k);
+  const double wk = k == 0 ? 1.0 : k == 1 ? w : k == 2 ? w * w : std::pow(w, k);  // the same numbers, no pow for the orders a grid needs
   switch (family) {
     case Family::Cos:
     case Family::Sin: {

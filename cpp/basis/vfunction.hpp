@@ -29,6 +29,13 @@ struct VFunction {
   double sigma() const { return (family == Family::Cos || family == Family::Sin) ? -w * w : w * w; }
   // The k-th derivative d^k g / dv^k at v.
   double eval(double v, int k = 0) const;
+  // out[k] = d^k g / dv^k at v for k = 0..maxK (a cosine or sine computed once for all).
+  void evalUpTo(double v, int maxK, double* out) const;
+  // Cos and Sin only: the same from c = cos(w v) and sn = sin(w v) already computed (a grid
+  // shares them between the coordinates and between a cosine and a sine of one frequency).
+  void trigUpTo(double c, double sn, int maxK, double* out) const;
+  // The same at v[0..n) into out (a general function's compiled program runs once over all).
+  void evalMany(const double* v, size_t n, int k, double* out) const;
   bool operator==(const VFunction& o) const {
     return family == o.family && w == o.w && n == o.n && c == o.c && degree == o.degree && general == o.general;
   }

@@ -32,11 +32,14 @@ void requireFinite(const VExpansion& f, double v) {
 VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor, bool dropNoise) {
   const double L = v1 - v0, omega = 2 * M_PI / L;
   const int K = std::max(1024, 16 * N);
-  std::vector<double> samples(K + 1);
-  for (int j = 0; j <= K; ++j) {
-    samples[j] = expansionValue(f, v0 + L * j / K);
-    if (!std::isfinite(samples[j])) requireFinite(f, v0 + L * j / K);
+  std::vector<double> vs(K + 1), samples(K + 1, 0.0), g(K + 1);
+  for (int j = 0; j <= K; ++j) vs[j] = v0 + L * j / K;
+  for (const VTerm& t : f) {  // term by term over all the points (a general one in one program run)
+    t.g.evalMany(vs.data(), vs.size(), 0, g.data());
+    for (int j = 0; j <= K; ++j) samples[j] += t.coef * g[j];
   }
+  for (int j = 0; j <= K; ++j)
+    if (!std::isfinite(samples[j])) requireFinite(f, vs[j]);
   // a_k - i b_k = (2/K) Σ_j w_j f_j e^{-ikωv_j}: powers of e^{iωv_j} instead of 2N trig calls per sample.
   std::vector<double> a(N + 1, 0.0), b(N + 1, 0.0);
   for (int j = 0; j <= K; ++j) {

@@ -17,6 +17,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "basis/general_function.hpp"
 #include "common/errors.hpp"
 #include "scene/chain_conditions.hpp"
 #include "scene/expression_fields.hpp"
@@ -214,14 +215,25 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     }
     ComponentProblem& cp = out.component[c];
     const std::string text = loop.path + " (the loop)";
-    cp.left[0] = scene_json::slotFromExpr(x, text);
+    // A loop of several borders is piecewise (each piece times its indicator): nothing in it is
+    // a family term of the whole loop, and the modal method expands it whole, so it is one
+    // general function; splitting it symbolically cost a fill's solve a fifth of its time. A
+    // cap (one border) keeps its family terms, solved exactly.
+    const auto slot = [&](const Expr& e) {
+      if (n == 1) return scene_json::slotFromExpr(e, text);
+      VFunction g;
+      g.family = Family::General;
+      g.general = std::make_shared<GeneralFunction>(text, e);
+      return VExpansion{{g, 1.0}};
+    };
+    cp.left[0] = slot(x);
     cp.right[0] = {{VFunction{Family::Poly, 1.0, 0}, centre[c]}};
     if (tangency) {
-      cp.left[1] = scene_json::slotFromExpr(d, text);
+      cp.left[1] = slot(d);
       cp.right[1] = {{VFunction{Family::Cos, 1.0}, -a[c]}, {VFunction{Family::Sin, 1.0}, -b[c]}};
     }
     if (curvature) {
-      cp.left[2] = scene_json::slotFromExpr(dd, text);
+      cp.left[2] = slot(dd);
       cp.right[2] = {{VFunction{Family::Poly, 1.0, 0}, centreBend[0] * normal[c]},
                      {VFunction{Family::Cos, 2.0}, centreBend[1] * normal[c]},
                      {VFunction{Family::Sin, 2.0}, centreBend[2] * normal[c]}};

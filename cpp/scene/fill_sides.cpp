@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "expr/program.hpp"
 #include "scene/patch_graph.hpp"
 
 namespace pdesurf {
@@ -40,20 +41,28 @@ FillSide fillSideOf(const Patch& fill, size_t k, const SolvedLookup& solved, int
     s.Xsw[c] = multiply(constant(span), substitute(derivative(e.out[c], ExprVar::V), ExprVar::V, param));
     s.Xww[c] = substitute(e.outOut[c], ExprVar::V, param);
   }
-  for (int i = 0; i <= kPerSide; ++i) {
-    const double v = s.v0 + (s.v1 - s.v0) * i / kPerSide;
-    s.x.push_back(valueAt(s.X, v));
-    s.d.push_back(valueAt(s.D, v));
-    bool finite = s.x.back().allFinite() && s.d.back().allFinite();
-    if (depth >= 1) {
-      s.t.push_back(valueAt(s.T, v));
-      finite = finite && s.t.back().allFinite();
-    }
-    if (depth >= 2) {
-      s.dd.push_back(valueAt(s.Xww, v));
-      finite = finite && s.dd.back().allFinite() && valueAt(s.Xss, v).allFinite() && valueAt(s.Xsw, v).allFinite();
-    }
-    if (!finite) throw Error(ErrorCode::NonFinite, b.path + ": " + s.name + " is not finite at v = " + shortNumber(v));
+  // The samples: every expression the depth asks for, in one program run over all the points
+  // (the sides share their source's subexpressions; a tree walk per point and expression
+  // evaluated them again and again).
+  std::vector<Expr> roots(s.X.begin(), s.X.end());
+  if (depth >= 1) roots.insert(roots.end(), s.D.begin(), s.D.end()), roots.insert(roots.end(), s.T.begin(), s.T.end());
+  if (depth >= 2)
+    for (const Vec3Expr* e : {&s.Xww, &s.Xss, &s.Xsw}) roots.insert(roots.end(), e->begin(), e->end());
+  const size_t m = kPerSide + 1;
+  std::vector<double> vs(m), values(roots.size() * m);
+  std::vector<double*> outs(roots.size());
+  for (size_t i = 0; i < m; ++i) vs[i] = s.v0 + (s.v1 - s.v0) * static_cast<double>(i) / kPerSide;
+  for (size_t r = 0; r < roots.size(); ++r) outs[r] = values.data() + r * m;
+  ExprProgram(roots).runAll(vs.data(), nullptr, m, outs.data());
+  const auto at = [&](size_t r, size_t i) { return Eigen::Vector3d(outs[r][i], outs[r + 1][i], outs[r + 2][i]); };
+  for (size_t i = 0; i < m; ++i) {
+    s.x.push_back(at(0, i));
+    s.d.push_back(depth >= 1 ? at(3, i) : Eigen::Vector3d::Zero());
+    if (depth >= 1) s.t.push_back(at(6, i));
+    if (depth >= 2) s.dd.push_back(at(9, i));
+    bool finite = true;
+    for (size_t r = 0; r < roots.size(); ++r) finite = finite && std::isfinite(outs[r][i]);
+    if (!finite) throw Error(ErrorCode::NonFinite, b.path + ": " + s.name + " is not finite at v = " + shortNumber(vs[i]));
   }
   return s;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
@@ -34,6 +36,16 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
     if (d > g.degree) return 0.0;
     return bernsteinBasisFrom(vBasis.values(g.degree - d) + static_cast<size_t>(j) * (g.degree - d + 1), g.degree, g.n, d);
   };
+  std::vector<double> column;
+  // cos(w v_j), sin(w v_j) of each frequency w once per grid line: the three coordinates' Fourier
+  // terms, and a cosine and a sine of one frequency, share them.
+  std::unordered_map<double, std::vector<std::pair<double, double>>> trig;
+  const auto trigOf = [&](double w) -> const std::vector<std::pair<double, double>>& {
+    auto [it, fresh] = trig.try_emplace(w);
+    if (fresh)
+      for (int j = 0; j <= nv; ++j) it->second.emplace_back(std::cos(w * t.v[j]), std::sin(w * t.v[j]));
+    return it->second;
+  };
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[c];
     const int T = static_cast<int>(terms.size());
@@ -45,12 +57,28 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
       terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk, &uBasis);
       bool finite = true;
       for (int i = 0; i < D * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
-      for (int j = 0; j <= nv; ++j)
-        for (int d = 0; d < D; ++d) {
-          const double g = vFactor(terms[k].g, j, d);
-          t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = g;
-          finite = finite && std::isfinite(g);
+      const bool many = terms[k].g.family == Family::General;  // one program run per order over the grid line
+      for (int d = 0; d < D && many; ++d) {
+        column.resize(nv + 1);
+        terms[k].g.evalMany(t.v.data(), nv + 1, d, column.data());
+        for (int j = 0; j <= nv; ++j) {
+          t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = column[j];
+          finite = finite && std::isfinite(column[j]);
         }
+      }
+      const Family family = terms[k].g.family;
+      const bool bernstein = family == Family::Bernstein, trigonometric = family == Family::Cos || family == Family::Sin;
+      const std::vector<std::pair<double, double>>* cs = trigonometric ? &trigOf(terms[k].g.w) : nullptr;
+      for (int j = 0; j <= nv && !many; ++j) {
+        double* out = t.vTab[c].data() + static_cast<size_t>(j) * D * T + D * k;
+        if (bernstein)
+          for (int d = 0; d < D; ++d) out[d] = vFactor(terms[k].g, j, d);
+        else if (trigonometric)
+          terms[k].g.trigUpTo((*cs)[j].first, (*cs)[j].second, D - 1, out);
+        else
+          terms[k].g.evalUpTo(t.v[j], D - 1, out);
+        for (int d = 0; d < D; ++d) finite = finite && std::isfinite(out[d]);
+      }
       if (!finite)
         throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": term " + describeFunction(terms[k].g) +
                                               " is not finite on the grid (v from " + std::to_string(s.v0) + " to " + std::to_string(s.v1) + ")");
