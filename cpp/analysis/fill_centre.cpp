@@ -14,6 +14,7 @@ namespace pdesurf {
 namespace {
 
 constexpr int kRings = 48, kAround = 96, kInner = 12;  // the inner grid: 12 rings over u in [1 - 2^-6, 1 - 2^-12]
+constexpr int kCheckRings = 32, kCheckAround = 64;       // the solve's fold check (checkFillRegular)
 constexpr double kInnerFrom = 1.0 / 64, kInnerTo = 1.0 / 4096;
 
 // Unit normals (zero where X_u × X_v vanishes) and, with second derivatives, the largest
@@ -49,15 +50,23 @@ GridFigures figures(const SeparableSurface& s, int nu, int nv, bool curvature) {
 
 }  // namespace
 
-FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s) {
+namespace {
+
+// The figures above on the fill's outer and inner grids, folds found; with `curvature`, the
+// rest of the centre's measures too (the solve's check needs only the folds: no second
+// derivatives, whose symbolic form and tabulation were half its cost).
+FillCentre centreOf(const std::string& name, const SeparableSurface& s, bool curvature) {
   FillCentre r;
   r.patch = name;
-  const double dv = (s.v1 - s.v0) / kAround;
-  // The fill's grid up to u = 1 - 1/kRings, then the inner grid closing in on the centre.
+  // The solve's check (no curvature) looks for folds on the drawing's resolution, 32 rings by
+  // 64 around (plus the inner rings): a third of the certificate's 48 × 96, which it keeps.
+  const int rings = curvature ? kRings : kCheckRings, around = curvature ? kAround : kCheckAround;
+  const double dv = (s.v1 - s.v0) / around;
+  // The fill's grid up to u = 1 - 1/rings, then the inner grid closing in on the centre.
   SeparableSurface outer = s, inner = s;
-  outer.u1 = s.u0 + (s.u1 - s.u0) * (kRings - 1) / kRings;
+  outer.u1 = s.u0 + (s.u1 - s.u0) * (rings - 1) / rings;
   inner.u0 = s.u1 - (s.u1 - s.u0) * kInnerFrom, inner.u1 = s.u1 - (s.u1 - s.u0) * kInnerTo;
-  const GridFigures a = figures(outer, kRings - 1, kAround, false), b = figures(inner, kInner, kAround, true);
+  const GridFigures a = figures(outer, rings - 1, around, false), b = figures(inner, kInner, around, curvature);
   const auto foldAt = [&](const GridFigures& g, const SeparableSurface& range) {
     for (int j = 0; j <= g.nv && !r.fold; ++j)
       for (int i = 0; i <= g.nu && !r.fold; ++i) {
@@ -72,16 +81,17 @@ FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s)
   foldAt(a, outer);
   foldAt(b, inner);
   // The two grids meet: the outer grid's last ring against the inner grid's first.
-  for (int j = 0; j <= kAround && !r.fold; ++j)
-    if (a.n[static_cast<size_t>(j) * kRings + kRings - 1].dot(b.n[static_cast<size_t>(j) * (kInner + 1)]) < 0)
+  for (int j = 0; j <= around && !r.fold; ++j)
+    if (a.n[static_cast<size_t>(j) * rings + rings - 1].dot(b.n[static_cast<size_t>(j) * (kInner + 1)]) < 0)
       r.fold = true, r.foldU = outer.u1, r.foldV = s.v0 + dv * j;
+  if (!curvature) return r;
   // A ring's spread: the largest angle of its normals from their mean.
   const auto spread = [&](int ring) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int j = 0; j < kAround; ++j) mean += b.n[static_cast<size_t>(j) * (kInner + 1) + ring];
+    for (int j = 0; j < around; ++j) mean += b.n[static_cast<size_t>(j) * (kInner + 1) + ring];
     mean.normalize();
     double worst = 0.0;
-    for (int j = 0; j < kAround; ++j) {
+    for (int j = 0; j < around; ++j) {
       const Eigen::Vector3d& n = b.n[static_cast<size_t>(j) * (kInner + 1) + ring];
       worst = std::max(worst, std::atan2(n.cross(mean).norm(), n.dot(mean)) * 180.0 / M_PI);
     }
@@ -91,7 +101,7 @@ FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s)
   r.normalSpreadOuterDeg = spread(0);
   // Curvature: the three innermost rings against the three outermost of the inner grid.
   double far = 0.0;
-  for (int j = 0; j < kAround; ++j)
+  for (int j = 0; j < around; ++j)
     for (int i = 0; i < 3; ++i) {
       far = std::max(far, b.k[static_cast<size_t>(j) * (kInner + 1) + i]);
       r.curvatureNear = std::max(r.curvatureNear, b.k[static_cast<size_t>(j) * (kInner + 1) + kInner - i]);
@@ -102,8 +112,12 @@ FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s)
   return r;
 }
 
+}  // namespace
+
+FillCentre measureFillCentre(const std::string& name, const SeparableSurface& s) { return centreOf(name, s, true); }
+
 void checkFillRegular(const Patch& fill, const SeparableSurface& surface) {
-  const FillCentre c = measureFillCentre(fill.name, surface);
+  const FillCentre c = centreOf(fill.name, surface, false);
   if (!c.fold) return;
   std::ostringstream o;
   o.precision(3);

@@ -34,7 +34,9 @@ constexpr double kCentreCurvatureRatio = 2.0;
 FillCentre measureFillCentre(const std::string& name, const SeparableSurface& fill);
 
 // Throws Error(InvalidField) naming the fill and where it folds: solveScene calls it on every
-// fill it solves, so a folding fill is never drawn.
+// fill it solves, so a folding fill is never drawn. It looks for folds only (no curvature),
+// on 32 × 64 and the inner 12 × 64: the drawing's resolution; the certificate's
+// measureFillCentre keeps 48 × 96.
 void checkFillRegular(const Patch& fill, const SeparableSurface& surface);
 
 }  // namespace pdesurf
