@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "cad/border_joins.hpp"
+#include "cad/brep_topology.hpp"
 #include "cad/fitted_joins.hpp"
 #include "cad/iges_writer.hpp"
 #include "cad/scene_fit.hpp"
@@ -78,7 +80,22 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
   CadFileInfo info;
   info.title = scene.title;
   info.tolerance = tolerance;
-  const std::string text = format == CadFormat::Step ? writeStep(faces, info) : writeIges(faces, info);
+  // The topology: every join one shared edge, each connected set of faces a shell.
+  const BrepTopology topology = buildTopology(faces, borderJoins(solved), tolerance);
+  int shared = 0, free = 0;
+  for (const BrepEdge& e : topology.edges) (e.uses == 2 ? shared : free) += 1;
+  std::snprintf(line, sizeof line, "topology: %zu faces, %zu edges (%d shared or seams, %d free), %zu vertices\n", faces.size(),
+                topology.edges.size(), shared, free, topology.vertices.size());
+  out << line;
+  for (const BrepShell& sh : topology.shells) {
+    std::string names;
+    for (int f : sh.faces) names += (names.empty() ? "" : ", ") + faces[size_t(f)].name;
+    if (sh.closed) std::snprintf(line, sizeof line, "  closed shell (a solid), volume %.6g: ", sh.volume);
+    else std::snprintf(line, sizeof line, "  open shell: ");
+    out << line << names << "\n";
+  }
+  for (const std::string& why : topology.unshared) out << "  not shared: " << why << "\n";
+  const std::string text = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info);
   // Beside the target, so the rename stays on one file system.
   const std::string temporary = o.output + ".part-" + std::to_string(getpid());
   {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "cad/brep_topology.hpp"
+
 namespace pdesurf {
 
 namespace {
@@ -70,84 +72,68 @@ int writeCurve(Data& d, int degree, const std::vector<int>& poles, const std::ve
                logical(closed) + ",.F.," + ints(mults) + "," + reals(knots) + ",.UNSPECIFIED.)");
 }
 
-// One ADVANCED_FACE with its own vertices and edges. A border is a pole row or column
-// (clamped knots), so each edge curve reuses the surface's own points. The loop runs
-// counter-clockwise in (u, v): v0 forward, u1 forward, v1 backward, u0 backward. A closed-v
-// face uses its v0 edge again, reversed, as v1 (the seam); a degenerate border gets no edge
-// and its two corners one vertex (readers add the degenerate edge, as for a cone's apex).
-int writeFace(Data& d, const BSplineSurface& s) {
+// A face's surface: the B-spline with its own control points.
+int writeSurface(Data& d, const BSplineSurface& s) {
   std::vector<int> pts(s.poles.size());
   for (size_t k = 0; k < s.poles.size(); ++k) pts[k] = writePoint(d, s.poles[k]);
-  auto pt = [&](int i, int j) { return pts[size_t(i) * s.countV + j]; };
-
   std::vector<double> ku, kv;
   std::vector<int> mu, mv;
   knotsWithMultiplicities(s.knotsU, &ku, &mu);
   knotsWithMultiplicities(s.knotsV, &kv, &mv);
   std::string rows = "(";
   for (int i = 0; i < s.countU; ++i) {
-    std::vector<int> row;
-    for (int j = 0; j < s.countV; ++j) row.push_back(pt(i, j));
+    std::vector<int> row(pts.begin() + i * s.countV, pts.begin() + (i + 1) * s.countV);
     rows += (i ? "," : "") + refs(row);
   }
   rows += ")";
-  const int surface =
-      d.add("B_SPLINE_SURFACE_WITH_KNOTS(''," + std::to_string(s.degreeU) + "," + std::to_string(s.degreeV) + "," +
-            rows + ",.UNSPECIFIED.,.F.," + logical(s.closedV) + ",.F.," + ints(mu) + "," + ints(mv) + "," + reals(ku) +
-            "," + reals(kv) + ",.UNSPECIFIED.)");
+  return d.add("B_SPLINE_SURFACE_WITH_KNOTS(''," + std::to_string(s.degreeU) + "," + std::to_string(s.degreeV) + "," + rows +
+               ",.UNSPECIFIED.,.F.," + logical(s.closedV) + ",.F.," + ints(mu) + "," + ints(mv) + "," + reals(ku) + "," + reals(kv) +
+               ",.UNSPECIFIED.)");
+}
 
-  // Corners 0 (u0,v0), 1 (u1,v0), 2 (u0,v1), 3 (u1,v1); a degenerate border or the seam
-  // makes two corners one vertex.
-  int parent[4] = {0, 1, 2, 3};
-  auto root = [&](int c) {
-    while (parent[c] != c) c = parent[c];
-    return c;
-  };
-  auto join = [&](int a, int b) { parent[root(a)] = root(b); };
-  if (s.degenerate[0] || s.closedV) join(0, 2);
-  if (s.degenerate[1] || s.closedV) join(1, 3);
-  if (s.degenerate[2]) join(0, 1);
-  if (s.degenerate[3]) join(2, 3);
-  const int lastI = s.countU - 1, lastJ = s.countV - 1;
-  const int cornerPoint[4] = {pt(0, 0), pt(lastI, 0), pt(0, lastJ), pt(lastI, lastJ)};
-  int vertex[4] = {0, 0, 0, 0};
-  auto vertexOf = [&](int c) {
-    const int r = root(c);
-    if (!vertex[r]) vertex[r] = d.add("VERTEX_POINT(''," + ref(cornerPoint[r]) + ")");
-    return vertex[r];
-  };
+// A pcurve's 2D B-spline in the parametric context.
+int writePcurve(Data& d, const BrepPcurve& p, int surface, int context2d) {
+  std::vector<int> poles;
+  for (const Eigen::Vector2d& q : p.poles) poles.push_back(d.add("CARTESIAN_POINT('',(" + formatReal(q.x()) + "," + formatReal(q.y()) + "))"));
+  const int curve = writeCurve(d, p.degree, poles, p.knots, false);
+  const int rep = d.add("DEFINITIONAL_REPRESENTATION(''," + refs({curve}) + "," + ref(context2d) + ")");
+  return d.add("PCURVE(''," + ref(surface) + "," + ref(rep) + ")");
+}
 
-  struct Border {
-    int which;     // kBezierEdge order u0 u1 v0 v1
-    int from, to;  // corners, in the curve's parameter direction
-    bool sense;    // as the loop runs
-    bool alongU;   // a pole column (v fixed) runs along u
-    int index;     // the fixed row or column
-  };
-  const Border loopOrder[4] = {{2, 0, 1, true, true, 0},
-                               {1, 1, 3, true, false, lastI},
-                               {3, 2, 3, false, true, lastJ},
-                               {0, 0, 2, false, false, 0}};
-  std::vector<int> oriented;
-  int seamEdge = 0;
-  for (const Border& b : loopOrder) {
-    if (s.degenerate[b.which]) continue;
-    int edge = seamEdge;
-    if (!(s.closedV && b.which == 3)) {
-      std::vector<int> poles;
-      for (int k = 0; k < (b.alongU ? s.countU : s.countV); ++k)
-        poles.push_back(b.alongU ? pt(k, b.index) : pt(b.index, k));
-      const int from = vertexOf(b.from), to = vertexOf(b.to);
-      const int curve =
-          writeCurve(d, b.alongU ? s.degreeU : s.degreeV, poles, b.alongU ? s.knotsU : s.knotsV, from == to);
-      edge = d.add("EDGE_CURVE(''," + ref(from) + "," + ref(to) + "," + ref(curve) + ",.T.)");
-      if (b.which == 2) seamEdge = edge;
+// The topology's vertices, edges and faces (cad/brep_topology.hpp): a shared edge is one
+// EDGE_CURVE that both faces' loops name, each in its own direction, its SURFACE_CURVE carrying
+// its curve in both faces' parameters; a flipped face has same_sense .F. and its loop already
+// runs the other way. Returns the ADVANCED_FACE ids.
+std::vector<int> writeFaces(Data& d, const std::vector<BSplineSurface>& faces, const BrepTopology& t) {
+  std::vector<int> surface;
+  for (const BSplineSurface& f : faces) surface.push_back(writeSurface(d, f));
+  const int context2d =
+      d.add("(GEOMETRIC_REPRESENTATION_CONTEXT(2)PARAMETRIC_REPRESENTATION_CONTEXT()REPRESENTATION_CONTEXT('2D SPACE',''))");
+  std::vector<int> vertex;
+  for (const Eigen::Vector3d& p : t.vertices) vertex.push_back(d.add("VERTEX_POINT(''," + ref(writePoint(d, p)) + ")"));
+  std::vector<int> edge;
+  for (const BrepEdge& e : t.edges) {
+    std::vector<int> poles;
+    for (const Eigen::Vector3d& p : e.curve.poles) poles.push_back(writePoint(d, p));
+    int curve = writeCurve(d, e.curve.degree, poles, e.curve.knots, e.start == e.end);
+    if (!e.pcurves.empty()) {
+      std::vector<int> pcurves;
+      for (const BrepPcurve& p : e.pcurves) pcurves.push_back(writePcurve(d, p, surface[size_t(p.face)], context2d));
+      curve = d.add("SURFACE_CURVE(''," + ref(curve) + "," + refs(pcurves) + ",.CURVE_3D.)");
     }
-    oriented.push_back(d.add("ORIENTED_EDGE('',*,*," + ref(edge) + "," + logical(b.sense) + ")"));
+    edge.push_back(d.add("EDGE_CURVE(''," + ref(vertex[size_t(e.start)]) + "," + ref(vertex[size_t(e.end)]) + "," + ref(curve) + ",.T.)"));
   }
-  const int loop = d.add("EDGE_LOOP(''," + refs(oriented) + ")");
-  const int bound = d.add("FACE_OUTER_BOUND(''," + ref(loop) + ",.T.)");
-  return d.add("ADVANCED_FACE(" + stepString(s.name) + ",(" + ref(bound) + ")," + ref(surface) + ",.T.)");
+  std::vector<int> out;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    std::vector<int> oriented;
+    for (const BrepEdgeUse& u : t.faces[f].loop)
+      oriented.push_back(d.add("ORIENTED_EDGE('',*,*," + ref(edge[size_t(u.edge)]) + "," + logical(u.forward) + ")"));
+    const int loop = d.add("EDGE_LOOP(''," + refs(oriented) + ")");
+    const int bound = d.add("FACE_OUTER_BOUND(''," + ref(loop) + ",.T.)");
+    out.push_back(d.add("ADVANCED_FACE(" + stepString(faces[f].name) + ",(" + ref(bound) + ")," + ref(surface[f]) + "," +
+                        logical(!t.faces[f].flipped) + ")"));
+  }
+  return out;
 }
 
 void appendHex(std::string* out, char32_t c, int digits) {
@@ -181,12 +167,14 @@ std::string stepString(const std::string& utf8) {
   return out + "'";
 }
 
-std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInfo& info) {
+std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInfo& info, const BrepTopology* topology) {
   checkFacesForCad(faces, info);
-  const CadStamp t = cadStamp(info);
+  const BrepTopology own = topology ? BrepTopology{} : buildTopology(faces, {}, info.tolerance);
+  const BrepTopology& t = topology ? *topology : own;
+  const CadStamp stampOf = cadStamp(info);
   char stamp[32];
-  std::snprintf(stamp, sizeof stamp, "%04d-%02d-%02dT%02d:%02d:%02d", t.year, t.month, t.day, t.hour, t.minute,
-                t.second);
+  std::snprintf(stamp, sizeof stamp, "%04d-%02d-%02dT%02d:%02d:%02d", stampOf.year, stampOf.month, stampOf.day, stampOf.hour,
+                stampOf.minute, stampOf.second);
   const std::string title = stepString(info.title);
 
   Data d;
@@ -213,14 +201,29 @@ std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInf
             "))GLOBAL_UNIT_ASSIGNED_CONTEXT((" + ref(mm) + "," + ref(rad) + "," + ref(sr) +
             "))REPRESENTATION_CONTEXT('3D','3D context with units and uncertainty'))");
 
-  // An open shell is a connected face set and the faces share no edges: one shell a face.
+  // Each connected set of faces is a shell: closed, the boundary of a solid; else open.
+  const std::vector<int> faceIds = writeFaces(d, faces, t);
   std::vector<int> shells;
-  for (const BSplineSurface& s : faces) shells.push_back(d.add("OPEN_SHELL('',(" + ref(writeFace(d, s)) + "))"));
-  const int model = d.add("SHELL_BASED_SURFACE_MODEL(''," + refs(shells) + ")");
+  bool allClosed = !t.shells.empty();
+  for (const BrepShell& sh : t.shells) {
+    std::vector<int> members;
+    for (int f : sh.faces) members.push_back(faceIds[size_t(f)]);
+    shells.push_back(d.add(std::string(sh.closed ? "CLOSED_SHELL" : "OPEN_SHELL") + "(''," + refs(members) + ")"));
+    allClosed = allClosed && sh.closed;
+  }
   const int origin = d.add("AXIS2_PLACEMENT_3D(''," + ref(d.add("CARTESIAN_POINT('',(0.,0.,0.))")) + "," +
                            ref(d.add("DIRECTION('',(0.,0.,1.))")) + "," + ref(d.add("DIRECTION('',(1.,0.,0.))")) + ")");
-  d.set(representation, "MANIFOLD_SURFACE_SHAPE_REPRESENTATION(" + title + ",(" + ref(origin) + "," + ref(model) +
-                            ")," + ref(geometricContext) + ")");
+  if (allClosed) {
+    // Every body closed: solids (several bodies stay several).
+    std::vector<int> items;
+    for (int shell : shells) items.push_back(d.add("MANIFOLD_SOLID_BREP(" + title + "," + ref(shell) + ")"));
+    items.push_back(origin);
+    d.set(representation, "ADVANCED_BREP_SHAPE_REPRESENTATION(" + title + "," + refs(items) + "," + ref(geometricContext) + ")");
+  } else {
+    const int model = d.add("SHELL_BASED_SURFACE_MODEL(''," + refs(shells) + ")");
+    d.set(representation, "MANIFOLD_SURFACE_SHAPE_REPRESENTATION(" + title + ",(" + ref(origin) + "," + ref(model) + ")," +
+                              ref(geometricContext) + ")");
+  }
 
   std::string out = "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('pdesurf B-spline surfaces'),'2;1');\n";
   out += "FILE_NAME(" + title + ",'" + stamp + "',(''),(''),'pdesurf','pdesurf','');\n";

@@ -4,7 +4,9 @@
 // loosened past the tolerance fails the same check; an unreachable tolerance is a named error
 // that leaves no file. The joins between the written faces are those `pdesurf check` finds
 // between the surfaces, each within both faces' deviations, G1 and up with normals within
-// 0.01°. docs/cad-export.md.
+// 0.01°. The STEP files' topology as OCCT reads it is what pdesurf says it wrote (shared edges,
+// free edges, closed shells and solids with their volume), and for three models what their
+// shape implies (issue 36). docs/cad-export.md.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, spawnSync } from 'node:child_process';
@@ -48,7 +50,23 @@ function parseExport(stdout) {
   // "  blend u0 - rippled t0: G1, gap 1.7e-15 (allowed 8e-06), normals 1.6e-11 deg (target 0.01): ok"
   const joins = [...stdout.matchAll(/^ {2}(\S+ \S+ - .+): (G[012]), gap (\S+) \(allowed (\S+)\)(?:, normals (\S+) deg \(target (\S+)\))?: (.+)$/gm)]
     .map((m) => ({ join: m[1], level: m[2], gap: Number(m[3]), allowed: Number(m[4]), normalDeg: m[5] === undefined ? null : Number(m[5]), verdict: m[7] }));
-  return { tolerance, patches, joins };
+  // "topology: 22 faces, 53 edges (53 shared or seams, 0 free), 33 vertices" and one line a shell.
+  const t = /^topology: (\d+) faces, (\d+) edges \((\d+) shared or seams, (\d+) free\), (\d+) vertices$/m.exec(stdout);
+  const shells = [...stdout.matchAll(/^ {2}(closed shell \(a solid\), volume (\S+)|open shell): /gm)].map((m) => ({ closed: m[2] !== undefined, volume: Number(m[2] ?? 0) }));
+  const unshared = [...stdout.matchAll(/^ {2}not shared: (.+)$/gm)].map((m) => m[1]);
+  const topology = t && { faces: Number(t[1]), edges: Number(t[2]), free: Number(t[4]), shells, unshared };
+  return { tolerance, patches, joins, topology };
+}
+
+// What Open CASCADE must find in a STEP file, from what pdesurf says it wrote: the free edges
+// (the model's open borders), no edge on more than two faces, every closed shell closed, and
+// when all are, that many solids of the volume pdesurf computed.
+function topologyExpectation(topology) {
+  const closed = topology.shells.filter((s) => s.closed);
+  const allClosed = closed.length === topology.shells.length;
+  const out = { freeEdges: topology.free, edgesOnMoreThanTwoFaces: 0, closedShells: closed.length, solids: allClosed ? closed.length : 0 };
+  if (allClosed) out.volume = closed.reduce((a, s) => a + s.volume, 0);
+  return out;
 }
 
 // The joins `pdesurf check` certifies between the surfaces: the same ones are measured between
@@ -68,19 +86,36 @@ async function exportAndReadBack(id, ext) {
   const file = join(dir, `${id}.${ext}`);
   const r = await runAsync(cli, ['export', example(id), '-o', file]);
   assert.equal(r.status, 0, `${id}.${ext}: ${r.stderr}`);
-  const { tolerance, patches, joins } = parseExport(r.stdout);
+  const { tolerance, patches, joins, topology } = parseExport(r.stdout);
   for (const p of patches) assert.ok(p.deviation <= tolerance, `${id} ${p.name}: ${p.deviation} > ${tolerance}`);
   checkFittedJoins(id, joins);
+  assert.ok(topology, `${id}: no topology line`);
+  assert.deepEqual(topology.unshared, [], `${id}: every join is a shared edge`);
   const expect = join(dir, `${id}.${ext}.expect.json`);
-  writeFileSync(expect, JSON.stringify({ tolerance, faces: samples(id, patches.map((p) => p.name)) }));
+  const wanted = { tolerance, faces: samples(id, patches.map((p) => p.name)) };
+  if (ext === 'step') wanted.topology = topologyExpectation(topology);
+  writeFileSync(expect, JSON.stringify(wanted));
   const back = await runAsync(readback, [file, expect]);
   const report = JSON.parse(back.stdout || '{}');
   assert.equal(back.status, 0, `${id}.${ext}: ${JSON.stringify(report.errors)} ${back.stderr.slice(0, 400)}`);
   assert.equal(report.valid, true);
   assert.equal(report.faceCount, patches.length);
   for (const f of report.faces) assert.ok(f.maxDeviation <= tolerance, `${id} ${f.name}: ${f.maxDeviation}`);
+  const expected = KNOWN_TOPOLOGY[id];
+  if (ext === 'step' && expected) {
+    for (const [key, value] of Object.entries(expected)) assert.equal(report[key], value, `${id}: ${key}`);
+  }
   return report;
 }
+
+// The models whose shape is known (issue 36): the aeroplane one solid with no free edge; fig4a
+// one open shell whose free edges are the cylinder's far ring and the plane's outer one; fig8c
+// three open shells (a fill ringed by strips each), every strip's outer border and ends free.
+const KNOWN_TOPOLOGY = {
+  'you2004-fig8d': { solids: 1, closedShells: 1, freeEdges: 0 },
+  'you2004-fig4a': { solids: 0, shells: 1, freeEdges: 2 },
+  'you2004-fig8c': { solids: 0, shells: 3, freeEdges: 36 },
+};
 
 // Under AddressSanitizer (the sanitize row) two small examples; natively every one, the
 // aeroplane too (22 patches, 14 s a file).

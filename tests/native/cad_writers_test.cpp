@@ -229,7 +229,8 @@ TEST_CASE("cad writers: STEP has one named advanced face per surface, edges by t
       closedSurfaces += body.find(".UNSPECIFIED.,.F.,.T.,") != std::string::npos;
   CHECK(closedSurfaces == 2);
 
-  // The points, in order, are every face's poles (then the placement's origin), exactly.
+  // The points, in order, begin with every face's poles, exactly (then the vertices, the edges'
+  // curves and the placement's origin).
   std::vector<Eigen::Vector3d> points;
   for (const auto& [id, body] : es)
     if (body.rfind("CARTESIAN_POINT('',(", 0) == 0) {
@@ -239,7 +240,7 @@ TEST_CASE("cad writers: STEP has one named advanced face per surface, edges by t
     }
   std::vector<Eigen::Vector3d> poles;
   for (const BSplineSurface& s : faces) poles.insert(poles.end(), s.poles.begin(), s.poles.end());
-  REQUIRE(points.size() == poles.size() + 1);
+  REQUIRE(points.size() > poles.size() + 1);
   for (size_t k = 0; k < poles.size(); ++k) CHECK(points[k] == poles[k]);
   CHECK(writeStep(faces, kInfo) == text);  // no clock, no hidden state
 }

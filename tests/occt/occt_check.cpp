@@ -7,6 +7,9 @@
 #include <stdexcept>
 
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -108,6 +111,52 @@ double stepUncertainty(const Handle(Interface_InterfaceModel) & model) {
   return t;
 }
 
+// Topology as OCCT read it (issue 36): solids, shells and which are closed, free edges (on one
+// face only, seams aside: the model's open borders), edges on more than two faces (not a
+// manifold); the solids' volume and the faces' area (BRepGProp). Judged where the
+// expectation states them.
+void checkTopology(const TopoDS_Shape& all, const Expectation& expect, json* rep, json* errors) {
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndUniqueAncestors(all, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  int freeEdges = 0, overShared = 0;
+  for (int i = 1; i <= edgeFaces.Extent(); ++i) {
+    const TopoDS_Edge& e = TopoDS::Edge(edgeFaces.FindKey(i));
+    const int n = edgeFaces(i).Extent();
+    if (BRep_Tool::Degenerated(e)) continue;
+    if (n == 1 && !BRep_Tool::IsClosed(e, TopoDS::Face(edgeFaces(i).First()))) ++freeEdges;
+    if (n > 2) ++overShared;
+  }
+  int solids = 0, shells = 0, closedShells = 0;
+  for (TopExp_Explorer x(all, TopAbs_SOLID); x.More(); x.Next()) ++solids;
+  for (TopExp_Explorer x(all, TopAbs_SHELL); x.More(); x.Next()) {
+    ++shells;
+    closedShells += BRep_Tool::IsClosed(x.Current());
+  }
+  GProp_GProps volume, area;
+  BRepGProp::VolumeProperties(all, volume);
+  BRepGProp::SurfaceProperties(all, area);
+  (*rep)["solids"] = solids;
+  (*rep)["shells"] = shells;
+  (*rep)["closedShells"] = closedShells;
+  (*rep)["freeEdges"] = freeEdges;
+  (*rep)["edgesOnMoreThanTwoFaces"] = overShared;
+  (*rep)["volume"] = volume.Mass();
+  (*rep)["area"] = area.Mass();
+  const auto want = [&](const char* key, int have) {
+    if (expect.topology.contains(key) && expect.topology[key].get<int>() != have)
+      errors->push_back(std::string(key) + ": OCCT found " + std::to_string(have) + ", expected " + std::to_string(expect.topology[key].get<int>()));
+  };
+  want("solids", solids);
+  want("closedShells", closedShells);
+  want("freeEdges", freeEdges);
+  want("edgesOnMoreThanTwoFaces", overShared);
+  if (expect.topology.contains("volume")) {
+    const double v = expect.topology["volume"].get<double>(), rel = expect.topology.value("volumeRelTol", 1e-4);
+    if (!(std::abs(volume.Mass() - v) <= rel * std::abs(v)))
+      errors->push_back("volume: OCCT found " + std::to_string(volume.Mass()) + ", expected " + std::to_string(v));
+  }
+}
+
 }  // namespace
 
 Expectation parseExpectation(const json& j) {
@@ -133,13 +182,19 @@ Expectation parseExpectation(const json& j) {
     if (face.samples.empty()) throw std::runtime_error("expectation: face '" + face.name + "' has no samples");
     e.faces.push_back(face);
   }
+  if (j.contains("topology")) {
+    if (!j["topology"].is_object()) throw std::runtime_error("expectation: topology is an object");
+    e.topology = j["topology"];
+  }
   return e;
 }
 
 json toJson(const Expectation& e) {
   json faces = json::array();
   for (const ExpectedFace& f : e.faces) faces.push_back({{"name", f.name}, {"samples", f.samples}});
-  return {{"tolerance", e.tolerance}, {"faces", faces}};
+  json out = {{"tolerance", e.tolerance}, {"faces", faces}};
+  if (!e.topology.empty()) out["topology"] = e.topology;
+  return out;
 }
 
 CheckResult checkCadFile(const std::string& path, const Expectation& expect) {
@@ -219,6 +274,7 @@ CheckResult checkCadFile(const std::string& path, const Expectation& expect) {
   for (int i = 1; i <= vertices.Extent(); ++i)
     maxTol = std::max(maxTol, BRep_Tool::Tolerance(TopoDS::Vertex(vertices(i))));
   rep["maxEdgeVertexTolerance"] = maxTol;
+  checkTopology(all, expect, &rep, &errors);
 
   for (const ExpectedFace& want : expect.faces) {
     auto it =

@@ -21,9 +21,12 @@ struct ExpectedFace {
 struct Expectation {
   double tolerance = 0.0;
   std::vector<ExpectedFace> faces;
+  // Optional: {"solids", "closedShells", "freeEdges", "edgesOnMoreThanTwoFaces": counts,
+  // "volume": v, "volumeRelTol": r (default 1e-4)}, each judged when given.
+  nlohmann::json topology = nlohmann::json::object();
 };
 
-// {"tolerance": t, "faces": [{"name": ..., "samples": [[u, v, x, y, z], ...]}]}; throws
+// {"tolerance": t, "faces": [{"name": ..., "samples": [[u, v, x, y, z], ...]}], "topology": {...}}; throws
 // std::runtime_error on anything else.
 Expectation parseExpectation(const nlohmann::json& j);
 nlohmann::json toJson(const Expectation& e);  // parseExpectation's inverse

@@ -93,7 +93,10 @@ function exportCadWith(Module, scene, { format = 'faces', tolerance, degree } = 
     const e = res.error || {};
     throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown export error'));
   }
-  return { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), joins: Array.from(res.joins || []), text: res.text };
+  const out = { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), joins: Array.from(res.joins || []), text: res.text };
+  // STEP: the shells the file holds ({ faces, closed, volume }; a closed one is a solid).
+  if (res.shells) out.shells = Array.from(res.shells);
+  return out;
 }
 
 // The scene as JSON text, or a PdesurfError: JSON.stringify throws RangeError on a too deep

@@ -208,7 +208,8 @@ export function createBorderPicker({ camera, dom, render, overlays, busy = () =>
   return {
     /** The drawn patches changed (viewer.setPatches): borders, hover and highlights follow. */
     setPatches(patches) {
-      borders = patches.flatMap(bordersOf);
+      // A surface's border first: where a blend's end lies on it, a tie picks the surface's.
+      borders = [...patches.filter((p) => isSurfaceKind(p.kind)), ...patches.filter((p) => !isSurfaceKind(p.kind))].flatMap(bordersOf);
       const h = hovered && find(hovered.patch, hovered.border);
       hovered = h && active?.filter(h.patch, h.border) ? h : null;
       drawHover();

@@ -1,0 +1,69 @@
+// The B-rep topology of a model's faces (issue 36): every join the certificate records
+// (cad/border_joins.hpp) becomes one edge shared by the two faces, with shared vertices at its
+// ends; a border met over parts (a fill over a range, a T-junction) is split where the parts
+// end, so both faces use the same edges. A closed face's seam is one edge it uses twice; a
+// collapsed border (a fill's centre) is a vertex. Faces are oriented consistently across
+// their shared edges, and a closed shell outward. Built on the fitted faces, whose borders
+// are pole rows: an edge's curve is the part of one face's border row (exact knot insertion).
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "cad/border_joins.hpp"
+#include "cad/bspline_curve.hpp"
+#include "cad/bspline_surface.hpp"
+
+namespace pdesurf {
+
+// An edge's curve in one face's (u, v), as a function of the edge curve's own parameter.
+struct BrepPcurve {
+  int face = 0;
+  int degree = 1;
+  std::vector<double> knots;            // clamped, over the edge curve's parameter range
+  std::vector<Eigen::Vector2d> poles;   // (u, v)
+};
+
+struct BrepEdge {
+  int start = 0, end = 0;  // vertices, along the curve
+  BSplineCurve curve;
+  // A shared edge: its curve in each of its two faces (a straight line in the one whose border
+  // it is; in the other, the join's parameter map: a line, or a fill side's easing as cubic
+  // Hermite pieces). Free edges and seams: none (a reader takes the face's own iso-line).
+  std::vector<BrepPcurve> pcurves;
+  int uses = 0;            // 1: a free (open) border; 2: shared, or a seam
+  double gap = 0;          // largest distance between the two sides' borders (sampled), scene units
+};
+
+struct BrepEdgeUse {
+  int edge = 0;
+  bool forward = true;  // along the edge's curve
+};
+
+struct BrepFace {
+  std::vector<BrepEdgeUse> loop;  // the outer loop, counter-clockwise seen from the face's normal
+  bool flipped = false;           // the face's normal is -(S_u × S_v)
+};
+
+struct BrepShell {
+  std::vector<int> faces;
+  bool closed = false;    // every edge of it used twice: a solid's boundary, oriented outward
+  double volume = 0;      // closed only: enclosed volume (from the fitted faces)
+};
+
+struct BrepTopology {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<BrepEdge> edges;
+  std::vector<BrepFace> faces;  // one per fitted face, same order
+  std::vector<BrepShell> shells;
+  // Joins not made into shared edges, and why ("'fill' u0 - 'strip' t0: the borders are 2e-3
+  // apart, beyond the tolerance 1e-6"): their faces keep their own edges there.
+  std::vector<std::string> unshared;
+};
+
+// faces[i] is the fitted face of the join list's face i. tolerance: the file's (scene units):
+// borders farther apart than twice it are not shared (named in `unshared`); vertices closer
+// than it are one.
+BrepTopology buildTopology(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance);
+
+}  // namespace pdesurf

@@ -1,0 +1,166 @@
+// The CAD topology (issue 36, cad/brep_topology.hpp): every join one shared edge, T-junctions
+// split, seams and collapsed borders as CAD has them, a closed model one outward shell. Judged
+// by counts that follow from the model (every edge of a closed shell used twice, free edges
+// exactly the open borders), by the volume against an independent quadrature of the solved
+// surfaces, and by mutations (a join left out, a face moved away) that must open the shell.
+#include <doctest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+
+#include "cad/border_joins.hpp"
+#include "cad/brep_topology.hpp"
+#include "cad/scene_fit.hpp"
+#include "scene/scene.hpp"
+#include "test_util.hpp"
+
+using namespace pdesurf;
+using namespace pdesurf::testing;
+
+namespace {
+
+struct Model {
+  Scene scene;
+  std::vector<SolvedPatch> solved;
+  std::vector<BSplineSurface> faces;
+  std::vector<BorderJoin> joins;
+  double tolerance = 0;
+};
+
+Model modelOf(const char* file) {
+  Model m{parseScene(readText(examplePath(file))), {}, {}, {}, 0};
+  m.solved = solveScene(m.scene);
+  for (const PatchFit& f : fitScene(m.solved, SceneFitOptions{}, &m.tolerance)) m.faces.push_back(f.surface);
+  m.joins = borderJoins(m.solved);
+  return m;
+}
+
+int freeEdges(const BrepTopology& t) {
+  int n = 0;
+  for (const BrepEdge& e : t.edges) n += e.uses == 1;
+  return n;
+}
+
+// Uses of each edge over every face's loop, and whether each shared edge is run both ways.
+void checkUses(const BrepTopology& t) {
+  std::vector<int> uses(t.edges.size(), 0), net(t.edges.size(), 0);
+  for (const BrepFace& f : t.faces)
+    for (const BrepEdgeUse& u : f.loop) ++uses[size_t(u.edge)], net[size_t(u.edge)] += u.forward ? 1 : -1;
+  for (size_t e = 0; e < t.edges.size(); ++e) {
+    CAPTURE(e);
+    CHECK(uses[e] == t.edges[e].uses);
+    if (uses[e] == 2) CHECK(net[e] == 0);  // oriented consistently: once each way
+  }
+}
+
+// (1/3) ∫∫ X · (X_u × X_v) over the solved surfaces themselves (not the fitted faces), each with
+// the topology's orientation: Gauss-Legendre 8 points on 16 × 32 cells.
+double solvedVolume(const Model& m, const BrepTopology& t) {
+  static const double x[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static const double w[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double total = 0;
+  for (size_t f = 0; f < m.solved.size(); ++f) {
+    const SeparableSurface& s = m.solved[f].surface;
+    const int cu = 16, cv = 32;
+    const double hu = (s.u1 - s.u0) / cu, hv = (s.v1 - s.v0) / cv;
+    double sum = 0;
+    for (int i = 0; i < cu; ++i)
+      for (int j = 0; j < cv; ++j)
+        for (int p = 0; p < 8; ++p)
+          for (int q = 0; q < 8; ++q) {
+            const double u = s.u0 + hu * (i + (1 + x[p]) / 2), v = s.v0 + hv * (j + (1 + x[q]) / 2);
+            const Eigen::Vector3d X = evalPoint(s, u, v), Xu = evalPoint(s, u, v, 1, 0), Xv = evalPoint(s, u, v, 0, 1);
+            sum += w[p] * w[q] * hu * hv / 4 * X.dot(Xu.cross(Xv));
+          }
+    total += (t.faces[f].flipped ? -1 : 1) * sum / 3;
+  }
+  return total;
+}
+
+}  // namespace
+
+TEST_CASE("a part of a B-spline curve by knot insertion is the same curve") {
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> unit(0, 1);
+  BSplineCurve c;
+  c.degree = 5;
+  c.knots = {0, 0, 0, 0, 0, 0, 0.2, 0.45, 0.45, 0.7, 1, 1, 1, 1, 1, 1};
+  for (size_t k = 0; k + c.degree + 1 < c.knots.size(); ++k) c.poles.push_back(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+  for (const auto& [a, b] : std::vector<std::pair<double, double>>{{0, 1}, {0, 0.3}, {0.3, 1}, {0.2, 0.45}, {0.1234, 0.8765}}) {
+    CAPTURE(a);
+    CAPTURE(b);
+    const BSplineCurve part = subCurve(c, a, b);
+    CHECK(part.knots.size() == part.poles.size() + part.degree + 1);
+    CHECK(part.knots.front() == a);
+    CHECK(part.knots.back() == b);
+    for (int k = 0; k <= 20; ++k) {
+      const double t = a + (b - a) * k / 20;
+      CHECK((evaluate(part, t) - evaluate(c, t)).norm() < 1e-14);
+    }
+    CHECK((part.poles.front() - evaluate(c, a)).norm() < 1e-14);  // clamped: the ends are poles
+    CHECK((part.poles.back() - evaluate(c, b)).norm() < 1e-14);
+  }
+}
+
+TEST_CASE("the aeroplane is one closed, outward shell: every edge shared, its volume the surfaces'") {
+  if (kTimeScale > 1) return;  // the fit of 22 patches: covered natively
+  const Model m = modelOf("you2004-fig8d.json");
+  const BrepTopology t = buildTopology(m.faces, m.joins, m.tolerance);
+  CHECK(t.unshared.empty());
+  REQUIRE(t.shells.size() == 1);
+  CHECK(t.shells[0].faces.size() == m.faces.size());
+  CHECK(t.shells[0].closed);
+  CHECK(freeEdges(t) == 0);
+  checkUses(t);
+  // Euler-Poincaré for a closed surface of genus 0 (wings and stabilisers are attached, not
+  // looped): V - E + F = 2.
+  const int faceCount = int(m.faces.size());
+  CHECK(int(t.vertices.size()) - int(t.edges.size()) + faceCount == 2);
+  const double v = solvedVolume(m, t);
+  CAPTURE(v);
+  CAPTURE(t.shells[0].volume);
+  CHECK(v > 0);  // outward
+  CHECK(std::abs(t.shells[0].volume - v) <= 1e-4 * v);
+  for (const BrepEdge& e : t.edges) CHECK(e.gap <= 2 * m.tolerance);
+
+  SUBCASE("a join left out opens the shell, with free edges there") {
+    std::vector<BorderJoin> fewer = m.joins;
+    fewer.erase(fewer.begin());
+    const BrepTopology open = buildTopology(m.faces, fewer, m.tolerance);
+    CHECK(!open.shells[0].closed);
+    CHECK(freeEdges(open) >= 2);
+  }
+  SUBCASE("a face moved away is not shared: named, and the shell is open") {
+    std::vector<BSplineSurface> moved = m.faces;
+    for (Eigen::Vector3d& p : moved[2].poles) p.z() += 1e-3;  // the nose cap
+    const BrepTopology open = buildTopology(moved, m.joins, m.tolerance);
+    REQUIRE(!open.unshared.empty());
+    CHECK(open.unshared[0].find("'nose' u0 - 'front1' u0: the two faces' borders are") == 0);
+    bool closed = false;
+    for (const BrepShell& s : open.shells) closed = closed || s.closed;
+    CHECK(!closed);
+  }
+}
+
+TEST_CASE("open models: free edges are exactly the open borders") {
+  if (kTimeScale > 1) return;
+  // fig4a: cylinder, blend, plane; the cylinder's far ring and the plane's outer ring are free.
+  const Model a = modelOf("you2004-fig4a.json");
+  const BrepTopology ta = buildTopology(a.faces, a.joins, a.tolerance);
+  CHECK(ta.unshared.empty());
+  REQUIRE(ta.shells.size() == 1);
+  CHECK(!ta.shells[0].closed);
+  CHECK(freeEdges(ta) == 2);
+  checkUses(ta);
+  // fig8c: three holes, each a fill ringed by strips of the sheet that meet only the fill: per
+  // strip its outer border and its two ends are free (12 strips).
+  const Model c = modelOf("you2004-fig8c.json");
+  const BrepTopology tc = buildTopology(c.faces, c.joins, c.tolerance);
+  CHECK(tc.unshared.empty());
+  CHECK(tc.shells.size() == 3);
+  CHECK(freeEdges(tc) == 36);
+  checkUses(tc);
+}
