@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "analysis/bodies.hpp"
 #include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
@@ -39,7 +40,8 @@ std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved, con
   return out;
 }
 
-nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr) {
+nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr,
+                      const std::vector<Body>& bs) {
   using nlohmann::json;
   json joins = json::array(), seams = json::array(), crossings = json::array();
   for (const JoinResult& j : r.seams)
@@ -65,8 +67,12 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
   for (const InteriorCreases& c : cr)
     creases.push_back({{"patch", c.patch}, {"coarse_deg", c.coarseDeg}, {"fine_deg", c.fineDeg}, {"crease_deg", c.creaseDeg}, {"worst_u", c.u},
                        {"worst_v", c.v}, {"smooth", c.ok}});
+  json bodies = json::array();
+  for (const Body& b : bs)
+    bodies.push_back({{"patches", b.patches}, {"closed", b.closed}, {"area", b.area}, {"volume", b.closed ? json(b.volume) : json(nullptr)},
+                      {"free_edges", b.freeEdges}});
   return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"seams", seams}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
-          {"creases", creases}};
+          {"creases", creases}, {"bodies", bodies}};
 }
 
 }  // namespace
@@ -79,8 +85,9 @@ int runCheck(const Options& o, std::ostream& out) {
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
   const std::vector<InteriorCreases> cr = creases(solved, r);
+  const std::vector<Body> bodies = measureBodies(solved, r.sceneSize);
   if (o.json) {
-    out << toJson(r, res, cr).dump(2) << "\n";
+    out << toJson(r, res, cr, bodies).dump(2) << "\n";
     return r.ok ? 0 : 1;
   }
   char line[512];
@@ -119,6 +126,15 @@ int runCheck(const Options& o, std::ostream& out) {
     std::snprintf(line, sizeof line, "crossing %s x %s: u %.4g..%.4g, v %.4g..%.4g (%d triangle pairs)\n", c.patch.c_str(), c.other.c_str(),
                   c.u[0], c.u[1], c.v[0], c.v[1], c.triangles);
     out << line;
+  }
+  // Each body: the patches its joins connect, closed or open, its area and a closed one's volume.
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const Body& b = bodies[k];
+    std::string names;
+    for (const std::string& n : b.patches) names += (names.empty() ? "" : ", ") + n;
+    if (b.closed) std::snprintf(line, sizeof line, "body %zu: closed, area %.7g, volume %.7g: ", k + 1, b.area, b.volume);
+    else std::snprintf(line, sizeof line, "body %zu: open (%d free edges), area %.7g: ", k + 1, b.freeEdges, b.area);
+    out << line << names << "\n";
   }
   std::string summary = std::to_string(r.joins.size()) + " joins, ";
   if (!r.seams.empty()) summary += std::to_string(r.seams.size()) + (r.seams.size() == 1 ? " seam, " : " seams, ");

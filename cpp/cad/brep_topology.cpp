@@ -33,7 +33,7 @@ struct BorderKey {
 
 class Builder {
  public:
-  Builder(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance)
+  Builder(const std::vector<TopologyFace>& faces, const std::vector<BorderJoin>& joins, double tolerance)
       : faces_(faces), joins_(joins), tol_(tolerance), breaks_(faces.size() * 4) {}
 
   BrepTopology run() {
@@ -58,12 +58,12 @@ class Builder {
  private:
   // A border that gets edges: not collapsed, and not a closed face's v1 (its seam is v0).
   bool usable(int f, int b) const {
-    const BSplineSurface& s = faces_[size_t(f)];
+    const TopologyFace& s = faces_[size_t(f)];
     return !s.degenerate[b] && !(s.closedV && b == 3);
   }
   std::array<double, 2> range(int f, int b) const {
-    const BSplineSurface& s = faces_[size_t(f)];
-    return b < 2 ? std::array<double, 2>{s.v0(), s.v1()} : std::array<double, 2>{s.u0(), s.u1()};
+    const TopologyFace& s = faces_[size_t(f)];
+    return b < 2 ? std::array<double, 2>{s.v0, s.v1} : std::array<double, 2>{s.u0, s.u1};
   }
   std::vector<double>& breaks(int f, int b) { return breaks_[size_t(f) * 4 + b]; }
   bool addBreak(int f, int b, double t) {
@@ -95,9 +95,9 @@ class Builder {
   }
 
   Eigen::Vector3d at(int f, int b, double t) const {
-    const BSplineSurface& s = faces_[size_t(f)];
-    const double u = b == 0 ? s.u0() : b == 1 ? s.u1() : t, v = b == 2 ? s.v0() : b == 3 ? s.v1() : t;
-    return evaluate(s, u, v);
+    const TopologyFace& s = faces_[size_t(f)];
+    const double u = b == 0 ? s.u0 : b == 1 ? s.u1 : t, v = b == 2 ? s.v0 : b == 3 ? s.v1 : t;
+    return s.eval(u, v, 0, 0);
   }
 
   void makeSegments() {
@@ -180,7 +180,7 @@ class Builder {
     parent_.resize(segments_.size() * 2);
     std::iota(parent_.begin(), parent_.end(), 0);
     for (size_t f = 0; f < faces_.size(); ++f) {
-      const BSplineSurface& s = faces_[f];
+      const TopologyFace& s = faces_[f];
       const int F = int(f);
       for (int b = 0; b < 4; ++b) {
         const int n = count_[f * 4 + b], first = first_[f * 4 + b];
@@ -238,7 +238,7 @@ class Builder {
       Segment& owner = s.partner >= 0 && !s.met ? segments_[size_t(s.partner)] : s;
       const int id = int(&owner - segments_.data());
       BrepEdge e;
-      e.curve = subCurve(borderCurve(faces_[size_t(owner.face)], owner.border), owner.t0, owner.t1);
+      if (const BSplineSurface* spline = faces_[size_t(owner.face)].spline) e.curve = subCurve(borderCurve(*spline, owner.border), owner.t0, owner.t1);
       e.start = vertex(2 * id), e.end = vertex(2 * id + 1);
       const bool seam = faces_[size_t(owner.face)].closedV && owner.border == 2;
       e.uses = owner.partner >= 0 || seam ? 2 : 1;
@@ -247,8 +247,10 @@ class Builder {
       if (owner.partner >= 0) {
         Segment& other = segments_[size_t(owner.partner)];
         other.edge = owner.edge, other.edgeForward = owner.sameWay;
-        e.pcurves.push_back(pcurveOf(owner, nullptr));
-        e.pcurves.push_back(pcurveOf(other, &joins_[size_t(owner.join)]));
+        if (faces_[size_t(owner.face)].spline) {
+          e.pcurves.push_back(pcurveOf(owner, nullptr));
+          e.pcurves.push_back(pcurveOf(other, &joins_[size_t(owner.join)]));
+        }
       }
       out_.edges.push_back(std::move(e));
     }
@@ -256,12 +258,12 @@ class Builder {
 
   // The (u, v) of a point of segment s's border at its own parameter x.
   Eigen::Vector2d uvOf(const Segment& s, double x) const {
-    const BSplineSurface& f = faces_[size_t(s.face)];
+    const TopologyFace& f = faces_[size_t(s.face)];
     switch (s.border) {
-      case 0: return {f.u0(), x};
-      case 1: return {f.u1(), x};
-      case 2: return {x, f.v0()};
-      default: return {x, f.v1()};
+      case 0: return {f.u0, x};
+      case 1: return {f.u1, x};
+      case 2: return {x, f.v0};
+      default: return {x, f.v1};
     }
   }
 
@@ -299,7 +301,7 @@ class Builder {
   void makeLoops() {
     out_.faces.resize(faces_.size());
     for (size_t f = 0; f < faces_.size(); ++f) {
-      const BSplineSurface& s = faces_[f];
+      const TopologyFace& s = faces_[f];
       const int order[4][2] = {{2, 1}, {1, 1}, {s.closedV ? 2 : 3, 0}, {0, 0}};
       for (const auto& [b, forward] : order) {
         if (s.degenerate[b]) continue;
@@ -352,11 +354,12 @@ class Builder {
       if (!consistent) out_.unshared.push_back("the faces around '" + faces_[start].name + "' cannot be oriented consistently");
       if (shell.closed) {
         double v = 0;
-        for (int f : shell.faces) v += (flip[size_t(f)] ? -1 : 1) * signedVolume(faces_[size_t(f)]);
+        for (int f : shell.faces) v += (flip[size_t(f)] ? -1 : 1) * faceSignedVolume(faces_[size_t(f)]);
         if (v < 0)
           for (int f : shell.faces) flip[size_t(f)] = !flip[size_t(f)];
         shell.volume = std::abs(v);
       }
+      for (int f : shell.faces) shell.area += faceArea(faces_[size_t(f)]);
       out_.shells.push_back(std::move(shell));
     }
     for (size_t f = 0; f < n; ++f) {
@@ -368,29 +371,7 @@ class Builder {
     }
   }
 
-  // (1/3) ∫∫ S · (S_u × S_v) du dv: Gauss-Legendre, 4 points a knot span each way.
-  static double signedVolume(const BSplineSurface& s) {
-    static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-    static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
-    double sum = 0;
-    for (size_t i = 0; i + 1 < s.knotsU.size(); ++i) {
-      const double a = s.knotsU[i], b = s.knotsU[i + 1];
-      if (!(b > a)) continue;
-      for (size_t j = 0; j + 1 < s.knotsV.size(); ++j) {
-        const double c = s.knotsV[j], d = s.knotsV[j + 1];
-        if (!(d > c)) continue;
-        for (int p = 0; p < 4; ++p)
-          for (int q = 0; q < 4; ++q) {
-            const double u = (a + b) / 2 + (b - a) / 2 * x[p], v = (c + d) / 2 + (d - c) / 2 * x[q];
-            const Eigen::Vector3d X = evaluate(s, u, v), Xu = evaluate(s, u, v, 1, 0), Xv = evaluate(s, u, v, 0, 1);
-            sum += w[p] * w[q] * (b - a) * (d - c) / 4 * X.dot(Xu.cross(Xv));
-          }
-      }
-    }
-    return sum / 3;
-  }
-
-  const std::vector<BSplineSurface>& faces_;
+  const std::vector<TopologyFace>& faces_;
   const std::vector<BorderJoin>& joins_;
   const double tol_;
   std::vector<std::vector<double>> breaks_;
@@ -400,10 +381,67 @@ class Builder {
   BrepTopology out_;
 };
 
+// Σ over the face's cells of a Gauss-Legendre rule (4 × 4) of f(X, X_u, X_v).
+template <class F>
+double integrate(const TopologyFace& face, F f) {
+  static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  static const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  double sum = 0;
+  for (size_t i = 0; i + 1 < face.uCells.size(); ++i) {
+    const double a = face.uCells[i], b = face.uCells[i + 1];
+    if (!(b > a)) continue;
+    for (size_t j = 0; j + 1 < face.vCells.size(); ++j) {
+      const double c = face.vCells[j], d = face.vCells[j + 1];
+      if (!(d > c)) continue;
+      for (int p = 0; p < 4; ++p)
+        for (int q = 0; q < 4; ++q) {
+          const double u = (a + b) / 2 + (b - a) / 2 * x[p], v = (c + d) / 2 + (d - c) / 2 * x[q];
+          sum += w[p] * w[q] * (b - a) * (d - c) / 4 * f(face.eval(u, v, 0, 0), face.eval(u, v, 1, 0), face.eval(u, v, 0, 1));
+        }
+    }
+  }
+  return sum;
+}
+
+std::vector<double> distinct(const std::vector<double>& knots) {
+  std::vector<double> out;
+  for (double k : knots)
+    if (out.empty() || k > out.back()) out.push_back(k);
+  return out;
+}
+
 }  // namespace
 
-BrepTopology buildTopology(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance) {
+double faceArea(const TopologyFace& f) {
+  if (!std::isnan(f.area)) return f.area;
+  return integrate(f, [](const Eigen::Vector3d&, const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) { return xu.cross(xv).norm(); });
+}
+
+double faceSignedVolume(const TopologyFace& f) {
+  if (!std::isnan(f.signedVolume)) return f.signedVolume;
+  return integrate(f, [](const Eigen::Vector3d& x, const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) { return x.dot(xu.cross(xv)); }) / 3;
+}
+
+TopologyFace topologyFace(const BSplineSurface& s) {
+  TopologyFace f;
+  f.name = s.name;
+  f.u0 = s.u0(), f.u1 = s.u1(), f.v0 = s.v0(), f.v1 = s.v1();
+  f.closedV = s.closedV;
+  for (int b = 0; b < 4; ++b) f.degenerate[b] = s.degenerate[b];
+  f.eval = [&s](double u, double v, int du, int dv) { return evaluate(s, u, v, du, dv); };
+  f.spline = &s;
+  f.uCells = distinct(s.knotsU), f.vCells = distinct(s.knotsV);
+  return f;
+}
+
+BrepTopology buildTopology(const std::vector<TopologyFace>& faces, const std::vector<BorderJoin>& joins, double tolerance) {
   return Builder(faces, joins, tolerance).run();
+}
+
+BrepTopology buildTopology(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance) {
+  std::vector<TopologyFace> described;
+  for (const BSplineSurface& s : faces) described.push_back(topologyFace(s));
+  return buildTopology(described, joins, tolerance);
 }
 
 }  // namespace pdesurf

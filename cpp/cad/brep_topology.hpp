@@ -7,6 +7,8 @@
 // are pole rows: an edge's curve is the part of one face's border row (exact knot insertion).
 #pragma once
 #include <Eigen/Core>
+#include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,8 @@ struct BrepFace {
 struct BrepShell {
   std::vector<int> faces;
   bool closed = false;    // every edge of it used twice: a solid's boundary, oriented outward
-  double volume = 0;      // closed only: enclosed volume (from the fitted faces)
+  double volume = 0;      // closed only: enclosed volume (from the faces given)
+  double area = 0;        // the faces' area
 };
 
 struct BrepTopology {
@@ -61,9 +64,33 @@ struct BrepTopology {
   std::vector<std::string> unshared;
 };
 
-// faces[i] is the fitted face of the join list's face i. tolerance: the file's (scene units):
-// borders farther apart than twice it are not shared (named in `unshared`); vertices closer
-// than it are one.
+// A face as the topology sees it: its parameter box, seam and collapsed borders, its points and
+// first derivatives; the fitted B-spline when there is one (edges then get curves), and the
+// parameters where its quadrature cells break (knots, creases).
+struct TopologyFace {
+  std::string name;
+  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
+  bool closedV = false;
+  bool degenerate[4] = {false, false, false, false};
+  std::function<Eigen::Vector3d(double u, double v, int du, int dv)> eval;
+  const BSplineSurface* spline = nullptr;
+  std::vector<double> uCells, vCells;  // sorted breaks, ends included
+  // Given when already known (a caller that integrates faster): faceArea and faceSignedVolume
+  // return them instead of integrating eval.
+  double area = NAN, signedVolume = NAN;
+};
+TopologyFace topologyFace(const BSplineSurface& s);
+
+// faces[i] is the join list's face i. tolerance (scene units): borders farther apart than
+// twice it are not shared (named in `unshared`); pieces shorter than it are vertices. Edges
+// have curves and pcurves only where faces have splines.
+BrepTopology buildTopology(const std::vector<TopologyFace>& faces, const std::vector<BorderJoin>& joins, double tolerance);
+// The fitted faces, for the CAD writers.
 BrepTopology buildTopology(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance);
+
+// Area of a face: ∫∫ |X_u × X_v| du dv, and its part of a closed shell's volume,
+// (1/3) ∫∫ X · (X_u × X_v) du dv (Gauss-Legendre, 4 points a cell each way).
+double faceArea(const TopologyFace& f);
+double faceSignedVolume(const TopologyFace& f);
 
 }  // namespace pdesurf

@@ -18,16 +18,23 @@ void checkGrid(int nu, int nv) {
 
 Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative) {
   checkGrid(nu, nv);
+  std::vector<double> u(nu + 1), v(nv + 1);
+  // Both ends exactly, so boundary rows reproduce the boundary conditions.
+  for (int i = 0; i <= nu; ++i) u[i] = i == nu ? s.u1 : s.u0 + (s.u1 - s.u0) * i / nu;
+  for (int j = 0; j <= nv; ++j) v[j] = j == nv ? s.v1 : s.v0 + (s.v1 - s.v0) * j / nv;
+  return tabulateAt(s, std::move(u), std::move(v), maxDerivative);
+}
+
+Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::vector<double> vs, int maxDerivative) {
+  checkGrid(int(us.size()) - 1, int(vs.size()) - 1);
   Tabulation t;
   const int D = maxDerivative + 1;
   t.depth = D;
+  const int nu = int(us.size()) - 1, nv = int(vs.size()) - 1;
   t.nu = nu;
   t.nv = nv;
-  t.u.resize(nu + 1);
-  t.v.resize(nv + 1);
-  // Both ends exactly, so boundary rows reproduce the boundary conditions.
-  for (int i = 0; i <= nu; ++i) t.u[i] = i == nu ? s.u1 : s.u0 + (s.u1 - s.u0) * i / nu;
-  for (int j = 0; j <= nv; ++j) t.v[j] = j == nv ? s.v1 : s.v0 + (s.v1 - s.v0) * j / nv;
+  t.u = std::move(us);
+  t.v = std::move(vs);
   static const char* axis[3] = {"x", "y", "z"};
   // Bézier patches: every term shares its Bernstein basis on each grid line.
   BernsteinOnGrid uBasis(t.u.data(), nu + 1), vBasis(t.v.data(), nv + 1);

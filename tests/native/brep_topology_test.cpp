@@ -9,6 +9,8 @@
 #include <cmath>
 #include <random>
 
+#include "analysis/bodies.hpp"
+#include "analysis/join_certificate.hpp"
 #include "cad/border_joins.hpp"
 #include "cad/brep_topology.hpp"
 #include "cad/scene_fit.hpp"
@@ -163,4 +165,40 @@ TEST_CASE("open models: free edges are exactly the open borders") {
   CHECK(tc.shells.size() == 3);
   CHECK(freeEdges(tc) == 36);
   checkUses(tc);
+}
+
+TEST_CASE("bodies from the solved surfaces: a sphere is closed by its poles and seam, its area and volume exact") {
+  // One "surface" patch closes on itself: its t-borders are poles, its v-borders a seam.
+  const std::string text = R"json({"format": "pdesurf-scene", "version": 4, "patches": [
+    {"name": "ball", "kind": "surface", "t_range": [0, "pi"], "v_range": [0, "2*pi"],
+     "x": "1.5*sin(t)*cos(v)", "y": "1.5*sin(t)*sin(v)", "z": "1.5*cos(t)"},
+    {"name": "tube", "kind": "surface", "t_range": [0, 2], "v_range": [0, "2*pi"], "x": "5 + 0.5*cos(v)", "y": "0.5*sin(v)", "z": "t"}]})json";
+  const Scene scene = parseScene(text);
+  const auto solved = solveScene(scene);
+  const std::vector<Body> bodies = measureBodies(solved, sceneSizeOf(solved));
+  REQUIRE(bodies.size() == 2);
+  const double r = 1.5;
+  CHECK(bodies[0].patches == std::vector<std::string>{"ball"});
+  CHECK(bodies[0].closed);
+  CHECK(bodies[0].area == doctest::Approx(4 * M_PI * r * r).epsilon(1e-9));
+  CHECK(bodies[0].volume == doctest::Approx(4.0 / 3 * M_PI * r * r * r).epsilon(1e-9));
+  CHECK(!bodies[1].closed);  // an open tube: its two rings are free
+  CHECK(bodies[1].freeEdges == 2);
+  CHECK(bodies[1].area == doctest::Approx(2 * M_PI * 0.5 * 2).epsilon(1e-9));
+}
+
+TEST_CASE("the aeroplane's body from its exact surfaces: closed, the fitted faces' volume and area within 1e-4") {
+  if (kTimeScale > 1) return;
+  const Model m = modelOf("you2004-fig8d.json");
+  const std::vector<Body> bodies = measureBodies(m.solved, sceneSizeOf(m.solved));
+  REQUIRE(bodies.size() == 1);
+  CHECK(bodies[0].closed);
+  CHECK(bodies[0].freeEdges == 0);
+  const BrepTopology t = buildTopology(m.faces, m.joins, m.tolerance);
+  CAPTURE(bodies[0].volume);
+  CAPTURE(t.shells[0].volume);
+  CHECK(std::abs(bodies[0].volume - t.shells[0].volume) <= 1e-4 * t.shells[0].volume);
+  CHECK(std::abs(bodies[0].area - t.shells[0].area) <= 1e-4 * t.shells[0].area);
+  // And against the independent quadrature above (evalPoint, 8 × 8 points on 16 × 32 cells).
+  CHECK(std::abs(bodies[0].volume - solvedVolume(m, t)) <= 1e-4 * bodies[0].volume);
 }

@@ -1,0 +1,105 @@
+#include "analysis/bodies.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "cad/border_joins.hpp"
+#include "cad/brep_topology.hpp"
+#include "cad/creases.hpp"
+#include "surface/combine_rows.hpp"
+#include "surface/tabulation.hpp"
+
+namespace pdesurf {
+
+namespace {
+
+constexpr double kJoinTolerance = 1e-8;  // of the scene's size
+constexpr int kCellsU = 16, kCellsV = 32;
+const double kGaussX[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+const double kGaussW[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+
+// Gauss nodes and weights over the cells between sorted breaks.
+void nodes(const std::vector<double>& breaks, std::vector<double>* x, std::vector<double>* w) {
+  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double a = breaks[k], b = breaks[k + 1];
+    if (!(b > a)) continue;
+    for (int p = 0; p < 4; ++p) x->push_back((a + b) / 2 + (b - a) / 2 * kGaussX[p]), w->push_back((b - a) / 2 * kGaussW[p]);
+  }
+}
+
+std::vector<double> uniform(double a, double b, int n) {
+  std::vector<double> out;
+  for (int k = 0; k <= n; ++k) out.push_back(k == n ? b : a + (b - a) * k / n);
+  return out;
+}
+
+// Area and (1/3) ∫ X · (X_u × X_v) of one solved surface, tabulated at the Gauss nodes.
+void integrate(const SeparableSurface& s, double* area, double* volume) {
+  std::vector<double> ub = uniform(s.u0, s.u1, kCellsU), vb = uniform(s.v0, s.v1, kCellsV);
+  for (double f : {1.0 / 256, 1.0 / 128, 1.0 / 64, 1.0 / 32}) ub.push_back(s.u0 + (s.u1 - s.u0) * f);  // towards u0
+  for (double c : findCreases(s)) vb.push_back(c);
+  std::sort(ub.begin(), ub.end());
+  std::sort(vb.begin(), vb.end());
+  std::vector<double> ux, uw, vx, vw;
+  nodes(ub, &ux, &uw);
+  nodes(vb, &vx, &vw);
+  const Tabulation t = tabulateAt(s, ux, vx, 1);
+  double a = 0, v = 0;
+  combineRows(t, [&](int j, const GridRow& row) {
+    for (size_t i = 0; i < ux.size(); ++i) {
+      const auto vec = [&](int q) { return Eigen::Vector3d(row.at(q, 0)[i], row.at(q, 1)[i], row.at(q, 2)[i]); };
+      const Eigen::Vector3d n = vec(1).cross(vec(2));
+      a += uw[i] * vw[size_t(j)] * n.norm();
+      v += uw[i] * vw[size_t(j)] * vec(0).dot(n);
+    }
+  });
+  *area = a, *volume = v / 3;
+}
+
+}  // namespace
+
+std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize) {
+  const double tol = kJoinTolerance * sceneSize;
+  std::vector<TopologyFace> faces;
+  for (const SolvedPatch& sp : solved) {
+    const SeparableSurface& s = sp.surface;
+    TopologyFace f;
+    f.name = sp.patch->name;
+    f.u0 = s.u0, f.u1 = s.u1, f.v0 = s.v0, f.v1 = s.v1;
+    f.eval = [&s](double u, double v, int du, int dv) { return evalPoint(s, u, v, du, dv); };
+    // Closed in v: both u-borders and the middle meet themselves across v0 = v1.
+    f.closedV = true;
+    for (double u : {s.u0, (s.u0 + s.u1) / 2, s.u1}) f.closedV = f.closedV && (evalPoint(s, u, s.v0) - evalPoint(s, u, s.v1)).norm() <= tol;
+    // A collapsed border: its points one (a fill's centre, a cone's apex).
+    for (int b = 0; b < 4; ++b) {
+      double spread = 0;
+      Eigen::Vector3d first;
+      for (int k = 0; k <= 8; ++k) {
+        const double t = k / 8.0;
+        const double u = b == 0 ? s.u0 : b == 1 ? s.u1 : s.u0 + (s.u1 - s.u0) * t, v = b == 2 ? s.v0 : b == 3 ? s.v1 : s.v0 + (s.v1 - s.v0) * t;
+        const Eigen::Vector3d x = evalPoint(s, u, v);
+        if (k == 0) first = x;
+        spread = std::max(spread, (x - first).norm());
+      }
+      f.degenerate[b] = spread <= tol;
+    }
+    integrate(s, &f.area, &f.signedVolume);
+    faces.push_back(std::move(f));
+  }
+  const BrepTopology t = buildTopology(faces, borderJoins(solved), tol);
+  std::vector<Body> out;
+  for (const BrepShell& sh : t.shells) {
+    Body b;
+    for (int f : sh.faces) b.patches.push_back(solved[size_t(f)].patch->name);
+    b.closed = sh.closed;
+    b.area = sh.area;
+    b.volume = sh.closed ? sh.volume : 0;
+    for (int f : sh.faces)
+      for (const BrepEdgeUse& u : t.faces[size_t(f)].loop) b.freeEdges += t.edges[size_t(u.edge)].uses == 1;
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+}  // namespace pdesurf

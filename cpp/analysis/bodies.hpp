@@ -1,0 +1,25 @@
+// The model's bodies (issue 36): its patches joined into shells by the joins the certificate
+// records (cad/brep_topology.hpp, built on the solved surfaces themselves), each with its area
+// and, when closed, the volume it encloses, integrated over the exact surfaces, not a mesh.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace pdesurf {
+
+struct Body {
+  std::vector<std::string> patches;
+  bool closed = false;  // every border shared with another patch (or a seam, or collapsed)
+  double area = 0;      // scene units²
+  double volume = 0;    // closed only, scene units³
+  int freeEdges = 0;    // pieces of border met by no other patch
+};
+
+// sceneSize: the scene's diagonal (join_certificate's sceneSizeOf): borders are one edge where
+// they are within 1e-8 of it. Area and volume: Gauss-Legendre, 4 points a cell, cells cut at the
+// surfaces' creases (a fill's corners) and graded towards u = 0 (a lift's decay).
+std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize);
+
+}  // namespace pdesurf
