@@ -202,3 +202,19 @@ TEST_CASE("the aeroplane's body from its exact surfaces: closed, the fitted face
   // And against the independent quadrature above (evalPoint, 8 × 8 points on 16 × 32 cells).
   CHECK(std::abs(bodies[0].volume - solvedVolume(m, t)) <= 1e-4 * bodies[0].volume);
 }
+
+TEST_CASE("the bottle example is built to be closed: one body, one closed shell, the same volume both ways") {
+  if (kTimeScale > 1) return;
+  const Model m = modelOf("bottle-solid.json");
+  const std::vector<Body> bodies = measureBodies(m.solved, sceneSizeOf(m.solved));
+  REQUIRE(bodies.size() == 1);
+  CHECK(bodies[0].closed);
+  CHECK(bodies[0].patches.size() == 5);
+  const BrepTopology t = buildTopology(m.faces, m.joins, m.tolerance);
+  REQUIRE(t.shells.size() == 1);
+  CHECK(t.shells[0].closed);
+  CHECK(t.unshared.empty());
+  checkUses(t);
+  CHECK(int(t.vertices.size()) - int(t.edges.size()) + int(m.faces.size()) == 2);
+  CHECK(std::abs(bodies[0].volume - t.shells[0].volume) <= 1e-4 * bodies[0].volume);
+}
