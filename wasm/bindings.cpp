@@ -7,6 +7,7 @@
 #include <cmath>
 #include <new>
 
+#include "analysis/bodies.hpp"
 #include "analysis/join_certificate.hpp"
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
@@ -162,6 +163,20 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
       centres.call<void>("push", o);
     }
     report.set("centres", centres);
+    // The model's bodies (issue 36): closed or open, area, a closed one's volume.
+    val bodies = val::array();
+    for (const Body& b : measureBodies(solved, r.sceneSize)) {
+      val o = val::object();
+      val names = val::array();
+      for (const std::string& n : b.patches) names.call<void>("push", n);
+      o.set("patches", names);
+      o.set("closed", b.closed);
+      o.set("area", b.area);
+      o.set("volume", b.volume);
+      o.set("freeEdges", b.freeEdges);
+      bodies.call<void>("push", o);
+    }
+    report.set("bodies", bodies);
   } catch (const Error& e) {
     // A scene whose declared join is wrong still draws; the report says why it cannot certify.
     val err = val::object();

@@ -11,6 +11,7 @@ import { addBlend, addFill, addLoopFill, bordersOfPatch } from './state/scene-jo
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
 import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
 import { messageOf } from './state/document.js';
+import { bodyText } from './state/join-report.js';
 
 const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
 
@@ -202,7 +203,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   // New scenes, undo steps within one, and drawn solves: the lists and the gizmo follow.
   doc.on('opened', () => api.sceneShown());
   doc.on('restored', () => api.sceneShown());
-  doc.on('drawn', (result, job) => api.drawn(result.patches, job.scene));
+  doc.on('drawn', (result, job) => api.drawn(result.patches, job.scene, result.report));
 
   hooks.build = () => ({ pickMode, gizmoMode, selection: doc.selection(), hidden: [...hidden] });
 
@@ -214,8 +215,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       showPlacementOf(doc.selection());
     },
     /** A good solve of `sceneText` was drawn: borders and the gizmo's mesh are the new ones. */
-    drawn(patches, sceneText) {
+    drawn(patches, sceneText, report) {
       drawn = patches;
+      outliner.showBodies((report?.bodies ?? []).map(bodyText));
       drawnText = sceneText;
       drawnScene = null;
       for (const name of hidden) viewer.setPatchVisible(name, false);

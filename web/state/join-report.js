@@ -54,10 +54,25 @@ export function normaliseReport(raw) {
     curvatureRatio: num(c.curvatureRatio),
     ok: Boolean(c.ok),
   }));
-  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, seams, crossings, crossingsChecked, centres };
+  // Issue 36: the model's bodies (the patches the joins connect), closed or open, area, volume.
+  const bodies = Array.from(raw.bodies || [], (b) => ({
+    patches: Array.from(b.patches || [], String),
+    closed: Boolean(b.closed),
+    area: num(b.area),
+    volume: num(b.volume),
+    freeEdges: Number(b.freeEdges) || 0,
+  }));
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, seams, crossings, crossingsChecked, centres, bodies };
   // A declared join the module cannot certify: the scene still draws, the report says why.
   if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
   return out;
+}
+
+/** A body as one line of text (no markup): "closed body of 5 patches: area 33.13, volume 14.37" (4 digits). */
+export function bodyText(b) {
+  const n = `${b.patches.length} ${b.patches.length === 1 ? 'patch' : 'patches'}`;
+  if (b.closed) return `closed body of ${n}: area ${sig(b.area, 4)}, volume ${sig(b.volume, 4)}`;
+  return `open body of ${n} (${b.freeEdges} free ${b.freeEdges === 1 ? 'edge' : 'edges'}): area ${sig(b.area, 4)}`;
 }
 
 /** A stable key for one join: the blend's name, its end and what it meets (a fill meets several). */

@@ -39,7 +39,10 @@ export function buildOutliner(gui, handlers) {
   list.className = 'outliner-list';
   const unused = document.createElement('div');
   unused.className = 'outliner-unused';
-  folder.$children.append(list, unused);
+  // The model's bodies from the last solve's report: closed or open, area, volume (issue 36).
+  const bodies = document.createElement('ul');
+  bodies.className = 'outliner-bodies';
+  folder.$children.append(list, bodies, unused);
   let selected = null;
   let hidden = new Set();
 
@@ -118,6 +121,15 @@ export function buildOutliner(gui, handlers) {
         label.textContent = 'unused parameters: ';
         unused.append(label, ...unusedParameters.map((n) => button(`✕ ${n}`, `remove the unused parameter ${n}`, () => handlers.onRemoveParameter(n), 'remove-parameter')));
       }
+    },
+    /** lines: one text per body (state/join-report.js bodyText), or [] before a report. */
+    showBodies(lines) {
+      bodies.replaceChildren(...lines.map((text) => {
+        const li = document.createElement('li');
+        li.className = 'outliner-body';
+        li.textContent = text;
+        return li;
+      }));
     },
     select(name) {
       selected = name;
