@@ -1,6 +1,7 @@
 // pdesurf export SCENE -o F.step|.stp|.igs|.iges [--tol T] [--degree 3|5]: every patch as a
 // B-spline face with its certified deviation (cpp/cad/). Written to a temporary file beside F
 // and renamed: a patch that cannot reach the tolerance leaves nothing behind.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -95,6 +96,9 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
     out << line << names << "\n";
   }
   for (const std::string& why : topology.unshared) out << "  not shared: " << why << "\n";
+  std::snprintf(line, sizeof line, "  largest gap closed: edges %.2g, vertices %.2g (the file states %.3g)\n", topology.edgeGap, topology.vertexSpread,
+                std::max({tolerance, topology.edgeGap, topology.vertexSpread}));
+  out << line;
   const std::string text = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info);
   // Beside the target, so the rename stays on one file system.
   const std::string temporary = o.output + ".part-" + std::to_string(getpid());

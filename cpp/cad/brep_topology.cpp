@@ -228,6 +228,10 @@ class Builder {
       ++members[size_t(v)];
     }
     for (size_t v = 0; v < out_.vertices.size(); ++v) out_.vertices[v] /= members[v];
+    for (size_t e = 0; e < parent_.size(); ++e) {
+      const Segment& s = segments_[e / 2];
+      out_.vertexSpread = std::max(out_.vertexSpread, ((e % 2 ? s.p1 : s.p0) - out_.vertices[size_t(vertex(int(e)))]).norm());
+    }
   }
   int vertex(int endpoint) { return vertexOf_[size_t(find(endpoint))]; }
 
@@ -243,6 +247,7 @@ class Builder {
       const bool seam = faces_[size_t(owner.face)].closedV && owner.border == 2;
       e.uses = owner.partner >= 0 || seam ? 2 : 1;
       e.gap = owner.gap;
+      out_.edgeGap = std::max(out_.edgeGap, e.gap);
       owner.edge = int(out_.edges.size()), owner.edgeForward = true;
       if (owner.partner >= 0) {
         Segment& other = segments_[size_t(owner.partner)];

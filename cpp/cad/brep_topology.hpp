@@ -56,6 +56,9 @@ struct BrepShell {
 
 struct BrepTopology {
   std::vector<Eigen::Vector3d> vertices;
+  // The largest distance of a vertex's points (the faces' corners it joins) from it, and of a
+  // shared edge's two borders from each other: a file's stated tolerance is at least these.
+  double vertexSpread = 0, edgeGap = 0;
   std::vector<BrepEdge> edges;
   std::vector<BrepFace> faces;  // one per fitted face, same order
   std::vector<BrepShell> shells;

@@ -1,5 +1,6 @@
 #include "cad/step_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cad/brep_topology.hpp"
@@ -194,7 +195,9 @@ std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInf
   const int mm = d.add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))");
   const int rad = d.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))");
   const int sr = d.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())");
-  const int uncertainty = d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(" + formatReal(info.tolerance) + ")," +
+  // The distance accuracy: the fit's tolerance, or the largest gap the topology closed if larger.
+  const double accuracy = std::max({info.tolerance, t.edgeGap, t.vertexSpread});
+  const int uncertainty = d.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(" + formatReal(accuracy) + ")," +
                                 ref(mm) + ",'distance_accuracy_value','pdesurf export tolerance')");
   const int geometricContext =
       d.add("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((" + ref(uncertainty) +

@@ -6,6 +6,7 @@
 #include <doctest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -13,6 +14,7 @@
 #include "analysis/join_certificate.hpp"
 #include "cad/border_joins.hpp"
 #include "cad/brep_topology.hpp"
+#include "cad/step_writer.hpp"
 #include "cad/scene_fit.hpp"
 #include "scene/scene.hpp"
 #include "test_util.hpp"
@@ -134,6 +136,18 @@ TEST_CASE("the aeroplane is one closed, outward shell: every edge shared, its vo
     const BrepTopology open = buildTopology(m.faces, fewer, m.tolerance);
     CHECK(!open.shells[0].closed);
     CHECK(freeEdges(open) >= 2);
+  }
+  SUBCASE("a face moved by 1.5 tolerances is still shared; the file states a tolerance that covers the gap") {
+    std::vector<BSplineSurface> moved = m.faces;
+    for (Eigen::Vector3d& p : moved[2].poles) p.z() += 1.5 * m.tolerance;
+    const BrepTopology shared = buildTopology(moved, m.joins, m.tolerance);
+    CHECK(shared.unshared.empty());
+    CHECK(shared.shells[0].closed);
+    CHECK(shared.edgeGap >= 1.4 * m.tolerance);
+    CadFileInfo info;
+    info.tolerance = m.tolerance;
+    const std::string text = writeStep(moved, info, &shared);
+    CHECK(text.find("LENGTH_MEASURE(" + formatReal(std::max({m.tolerance, shared.edgeGap, shared.vertexSpread})) + ")") != std::string::npos);
   }
   SUBCASE("a face moved away is not shared: named, and the shell is open") {
     std::vector<BSplineSurface> moved = m.faces;
