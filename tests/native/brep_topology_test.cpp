@@ -93,7 +93,8 @@ TEST_CASE("a part of a B-spline curve by knot insertion is the same curve") {
   c.degree = 5;
   c.knots = {0, 0, 0, 0, 0, 0, 0.2, 0.45, 0.45, 0.7, 1, 1, 1, 1, 1, 1};
   for (size_t k = 0; k + c.degree + 1 < c.knots.size(); ++k) c.poles.push_back(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
-  for (const auto& [a, b] : std::vector<std::pair<double, double>>{{0, 1}, {0, 0.3}, {0.3, 1}, {0.2, 0.45}, {0.1234, 0.8765}}) {
+  for (const auto& range : std::vector<std::pair<double, double>>{{0, 1}, {0, 0.3}, {0.3, 1}, {0.2, 0.45}, {0.1234, 0.8765}}) {
+    const double a = range.first, b = range.second;  // not a structured binding: CAPTURE's lambda takes them
     CAPTURE(a);
     CAPTURE(b);
     const BSplineCurve part = subCurve(c, a, b);
