@@ -15,6 +15,7 @@
 #include "cad/border_joins.hpp"
 #include "cad/bspline_curve.hpp"
 #include "cad/bspline_surface.hpp"
+#include "cad/topology_face.hpp"
 
 namespace pdesurf {
 
@@ -67,33 +68,11 @@ struct BrepTopology {
   std::vector<std::string> unshared;
 };
 
-// A face as the topology sees it: its parameter box, seam and collapsed borders, its points and
-// first derivatives; the fitted B-spline when there is one (edges then get curves), and the
-// parameters where its quadrature cells break (knots, creases).
-struct TopologyFace {
-  std::string name;
-  double u0 = 0, u1 = 1, v0 = 0, v1 = 1;
-  bool closedV = false;
-  bool degenerate[4] = {false, false, false, false};
-  std::function<Eigen::Vector3d(double u, double v, int du, int dv)> eval;
-  const BSplineSurface* spline = nullptr;
-  std::vector<double> uCells, vCells;  // sorted breaks, ends included
-  // Given when already known (a caller that integrates faster): faceArea and faceSignedVolume
-  // return them instead of integrating eval.
-  double area = NAN, signedVolume = NAN;
-};
-TopologyFace topologyFace(const BSplineSurface& s);
-
 // faces[i] is the join list's face i. tolerance (scene units): borders farther apart than
 // twice it are not shared (named in `unshared`); pieces shorter than it are vertices. Edges
 // have curves and pcurves only where faces have splines.
 BrepTopology buildTopology(const std::vector<TopologyFace>& faces, const std::vector<BorderJoin>& joins, double tolerance);
 // The fitted faces, for the CAD writers.
 BrepTopology buildTopology(const std::vector<BSplineSurface>& faces, const std::vector<BorderJoin>& joins, double tolerance);
-
-// Area of a face: ∫∫ |X_u × X_v| du dv, and its part of a closed shell's volume,
-// (1/3) ∫∫ X · (X_u × X_v) du dv (Gauss-Legendre, 4 points a cell each way).
-double faceArea(const TopologyFace& f);
-double faceSignedVolume(const TopologyFace& f);
 
 }  // namespace pdesurf
