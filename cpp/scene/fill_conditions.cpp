@@ -208,7 +208,9 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
       if (tangency) place(d, chi, dk);
       if (curvature) place(dd, chi, ddk);
       if (!first) continue;
-      const Expr tail = indicator(s.v0 + 2 * M_PI, INFINITY);
+      // From the last side's own end (the same double): v0 + 2π can differ from it by an ulp,
+      // and at that one v the two indicators then summed to ½ (the fill's point halved there).
+      const Expr tail = indicator(sides[n - 1].v1, INFINITY);
       place(x, tail, substitute(s.X[c], ExprVar::V, wrapped));
       if (tangency) place(d, tail, substitute(dk, ExprVar::V, wrapped));
       if (curvature) place(dd, tail, substitute(ddk, ExprVar::V, wrapped));

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "analysis/bodies.hpp"
@@ -17,10 +18,12 @@
 #include "cad/step_writer.hpp"
 #include "cad/scene_fit.hpp"
 #include "scene/scene.hpp"
+#include "random_holes.hpp"
 #include "test_util.hpp"
 
 using namespace pdesurf;
 using namespace pdesurf::testing;
+using json = nlohmann::json;
 
 namespace {
 
@@ -242,4 +245,52 @@ TEST_CASE("the bottle example is built to be closed: one body, one closed shell,
   checkUses(t);
   CHECK(int(t.vertices.size()) - int(t.edges.size()) + int(m.faces.size()) == 2);
   CHECK(std::abs(bodies[0].volume - t.shells[0].volume) <= 1e-4 * bodies[0].volume);
+}
+
+TEST_CASE("random holes and random capped tubes: the topology the model implies, on the solved surfaces") {
+  std::mt19937 rng(3606);
+  std::uniform_real_distribution<double> coef(-0.3, 0.3), unit(0, 1);
+  const int trials = kTimeScale > 1 ? 3 : 8;
+  for (int trial = 0; trial < trials; ++trial) {
+    // A hole of N = 3..8 sides ringed by N strips: one open body; the fill's loop is N shared
+    // edges, each strip's outer border and two ends are free (3 N), nothing unshared.
+    const int n = 3 + trial % 6;
+    CAPTURE(n);
+    const Scene hole = parseScene(randomHole(n, Sheet{coef(rng), coef(rng), coef(rng), 0.3 * coef(rng)}, rng, 0.5).dump());
+    const auto solved = solveScene(hole);
+    const std::vector<Body> bodies = measureBodies(solved, sceneSizeOf(solved));
+    REQUIRE(bodies.size() == 1);
+    CHECK(!bodies[0].closed);
+    CHECK(bodies[0].freeEdges == 3 * n);
+    CHECK(bodies[0].patches.size() == size_t(n + 1));
+    // A cone frustum of random radii and height capped by two fills: one closed body.
+    const double r0 = 0.6 + 0.6 * unit(rng), r1 = 0.6 + 0.6 * unit(rng), h = 1 + 2 * unit(rng);
+    char x[200], y[200];
+    std::snprintf(x, sizeof x, "(%.17g + %.17g*t)*cos(v)", r0, r1 - r0);
+    std::snprintf(y, sizeof y, "(%.17g + %.17g*t)*sin(v)", r0, r1 - r0);
+    const json tube = {{"format", "pdesurf-scene"}, {"version", 4},
+                       {"patches", json::array({{{"name", "tube"}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, "2*pi"}},
+                                                 {"x", x}, {"y", y}, {"z", std::to_string(h) + "*t"}},
+                                                {{"name", "bottom"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t0"}}}}, {"height", 0.3}},
+                                                {{"name", "top"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t1"}}}}, {"height", 0.3}}})}};
+    const Scene capped = parseScene(tube.dump());
+    const auto cs = solveScene(capped);
+    const std::vector<Body> cb = measureBodies(cs, sceneSizeOf(cs));
+    REQUIRE(cb.size() == 1);
+    CHECK(cb[0].closed);
+    CHECK(cb[0].freeEdges == 0);
+    // Its volume against the fitted faces' closed shell (B-splines, their own quadrature), and
+    // near the frustum's (π h (r0² + r0 r1 + r1²) / 3: the caps are shallow).
+    double tolerance = 0;
+    std::vector<BSplineSurface> faces;
+    for (const PatchFit& f : fitScene(cs, SceneFitOptions{}, &tolerance)) faces.push_back(f.surface);
+    const BrepTopology t = buildTopology(faces, borderJoins(cs), tolerance);
+    REQUIRE(t.shells.size() == 1);
+    CHECK(t.shells[0].closed);
+    const double frustum = M_PI * h * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
+    CAPTURE(frustum);
+    CAPTURE(cb[0].volume);
+    CHECK(std::abs(cb[0].volume - t.shells[0].volume) <= 1e-4 * cb[0].volume);
+    CHECK(std::abs(cb[0].volume - frustum) <= 0.3 * frustum);
+  }
 }
