@@ -10,43 +10,14 @@
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import { spawnSync } from 'node:child_process';
-import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
+import { skip, startHarness, hooks, shoot, REPO } from './harness.mjs';
+import { CLI, clickBorder, solving, checkLink } from './build-tools.mjs';
 import { encodeState } from '../../web/link/link-codec.js';
-
-const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
 
 const scene = (page) => page.evaluate(() => JSON.parse(window.__pdesurf.sceneText()));
 const names = async (page) => (await scene(page)).patches.map((p) => p.name);
 const history = (page) => page.evaluate(() => window.__pdesurf.history());
-
-/** Screen point of the middle vertex of border t0 (i = 0) or t1 (i = nu) of a drawn surface. */
-function borderMid(page, patch, border) {
-  return page.evaluate(([patch, border]) => {
-    const h = window.__pdesurf;
-    const { nu, nv } = h.lastSolve;
-    const i = border === 't0' ? 0 : nu;
-    return h.vertexScreen(patch, Math.round(nv / 2) * (nu + 1) + i);
-  }, [patch, border]);
-}
-
-async function clickBorder(page, patch, border) {
-  const p = await borderMid(page, patch, border);
-  await page.mouse.move(p.x - 20, p.y - 20);
-  await page.mouse.move(p.x, p.y, { steps: 3 });
-  const st = await page.evaluate(() => window.__pdesurf.modeller().borders.state());
-  assert.deepEqual(st.hovered, { patch, border }, `hover over ${patch} ${border}`);
-  await page.mouse.click(p.x, p.y);
-}
-
-// An edit that solves: run it and wait for the solve.
-async function solving(page, action) {
-  const n = (await hooks(page)).solveCount;
-  await action();
-  return solvedAfter(page, n);
-}
 
 const control = (page, key) => page.locator(`#panel [data-build="${key}"]`);
 const button = (page, name) => page.locator('#panel .build-folder button', { hasText: name }).first();
@@ -54,19 +25,6 @@ const button = (page, name) => page.locator('#panel .build-folder button', { has
 async function addSurface(page, label) {
   await control(page, 'kind').locator('select').selectOption({ label });
   return solving(page, () => button(page, 'add surface').click());
-}
-
-// The link in the address bar, decoded by the CLI and checked there.
-function checkLink(url) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-build-'));
-  const decoded = spawnSync(CLI, ['decode-link', url], { encoding: 'utf8' });
-  assert.equal(decoded.status, 0, decoded.stderr);
-  const file = path.join(dir, 'scene.json');
-  fs.writeFileSync(file, decoded.stdout);
-  const checked = spawnSync(CLI, ['check', file, '--json'], { encoding: 'utf8' });
-  fs.rmSync(dir, { recursive: true, force: true });
-  assert.equal(checked.status, 0, checked.stdout + checked.stderr);
-  return { scene: JSON.parse(decoded.stdout), report: JSON.parse(checked.stdout) };
 }
 
 // Close a page once its last edit's link is written (the deflater loads on first use; closing

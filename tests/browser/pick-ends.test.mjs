@@ -7,13 +7,10 @@
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import os from 'node:os';
-import path from 'node:path';
-import { spawnSync } from 'node:child_process';
-import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
+import { skip, startHarness, hooks, shoot } from './harness.mjs';
+import { CLI, clickBorder, solving, checkLink } from './build-tools.mjs';
 import { encodeState } from '../../web/link/link-codec.js';
 
-const CLI = process.env.PDESURF_CLI ?? path.join(REPO, 'build', 'native', 'pdesurf');
 const scene = (page) => page.evaluate(() => JSON.parse(window.__pdesurf.sceneText()));
 const control = (page, key) => page.locator(`#panel [data-build="${key}"]`);
 const button = (page, name) => page.locator('#panel .build-folder button', { hasText: name }).first();
@@ -27,43 +24,6 @@ function vase() {
       { name: 'ring', kind: 'surface', t_range: [0, 1], v_range: [0, '2*pi'], x: '(1.6 + t)*cos(v)', y: '(1.6 + t)*sin(v)', z: '-0.6' },
     ],
   };
-}
-
-/** Screen point of the middle vertex of a drawn patch's grid column i = 0 (u0, t0) or i = nu (u1, t1). */
-function borderMid(page, patch, border) {
-  return page.evaluate(([patch, border]) => {
-    const h = window.__pdesurf;
-    const { nu, nv } = h.lastSolve;
-    const i = border === 'u0' || border === 't0' ? 0 : nu;
-    return h.vertexScreen(patch, Math.round(nv / 4) * (nu + 1) + i);
-  }, [patch, border]);
-}
-
-async function pick(page, patch, border) {
-  const p = await borderMid(page, patch, border);
-  await page.mouse.move(p.x - 20, p.y - 20);
-  await page.mouse.move(p.x, p.y, { steps: 3 });
-  const st = await page.evaluate(() => window.__pdesurf.modeller().borders.state());
-  assert.deepEqual(st.hovered, { patch, border }, `hover over ${patch} ${border}`);
-  await page.mouse.click(p.x, p.y);
-}
-
-async function solving(page, action) {
-  const n = (await hooks(page)).solveCount;
-  await action();
-  return solvedAfter(page, n);
-}
-
-function checkLink(url) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-pick-ends-'));
-  const decoded = spawnSync(CLI, ['decode-link', url], { encoding: 'utf8' });
-  assert.equal(decoded.status, 0, decoded.stderr);
-  const file = path.join(dir, 'scene.json');
-  fs.writeFileSync(file, decoded.stdout);
-  const checked = spawnSync(CLI, ['check', file, '--json'], { encoding: 'utf8' });
-  fs.rmSync(dir, { recursive: true, force: true });
-  assert.equal(checked.status, 0, checked.stdout + checked.stderr);
-  return JSON.parse(checked.stdout);
 }
 
 describe('picking pde ends for fills and blends', { skip }, () => {
@@ -95,7 +55,7 @@ describe('picking pde ends for fills and blends', { skip }, () => {
       await control(page, 'fill-kind').locator('select').selectOption({ label: 'PDE (1–8 borders)' });
       await control(page, 'fill-pick').locator('input').check();
       await togglePanel();
-      await pick(page, 'vase', 'u1');
+      await clickBorder(page, 'vase', 'u1', 0.25);
       await shoot(page, `pick-ends-hover-${viewport.width}.png`);
       await solving(page, async () => {
         await togglePanel();
@@ -108,8 +68,8 @@ describe('picking pde ends for fills and blends', { skip }, () => {
       await control(page, 'fill-pick').locator('input').uncheck();
       await control(page, 'blend-pick').locator('input').check();
       await togglePanel();
-      await pick(page, 'vase', 'u0');
-      await solving(page, () => pick(page, 'ring', 't0'));
+      await clickBorder(page, 'vase', 'u0', 0.25);
+      await solving(page, () => clickBorder(page, 'ring', 't0', 0.25));
       assert.equal((await hooks(page)).lastError, null);
       s = await scene(page);
       const blend = s.patches.find((p) => p.name === 'blend1');
@@ -124,7 +84,7 @@ describe('picking pde ends for fills and blends', { skip }, () => {
       await shoot(page, `pick-ends-${viewport.width}.png`);
       await page.waitForFunction(() => location.hash.startsWith('#s='), null, { timeout: 10_000 });
       await page.waitForTimeout(400);
-      const report = checkLink(await page.evaluate(() => location.href));
+      const { report } = checkLink(await page.evaluate(() => location.href));
       assert.equal(report.ok, true);
       await page.close();
     });
