@@ -147,14 +147,10 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   // The target's border parameter runs over its own range (a fill's side: its part of it); the
   // primary's v over the given interval, else (PDE) the same v as the target, else (Bézier)
   // the primary's v-range.
-  const bool part = !std::isnan(m.targetFrom);
-  const double a0 = part ? m.targetFrom : m.alongU ? ts.u0 : ts.v0, a1 = part ? m.targetTo : m.alongU ? ts.u1 : ts.v1;
-  double p0 = m.v0, p1 = m.v1;
-  if (std::isnan(p0)) {
-    const bool sameV = target.patch->kind == PatchKind::Pde;
-    p0 = sameV ? a0 : prim.surface.v0;
-    p1 = sameV ? a1 : prim.surface.v1;
-  }
+  const JoinRanges ranges = joinRanges(m, prim.surface, target);
+  const bool part = ranges.part;
+  const double a0 = ranges.a0, a1 = ranges.a1;
+  double p0 = ranges.p0, p1 = ranges.p1;
   const auto sample = part ? openEdgeSamples : edgeSamples;
   const auto B = read ? read(target, m.alongU, m.end, sampleParameters(a0, a1, kJoinSamples, part))
                       : sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
@@ -223,6 +219,21 @@ const SolvedPatch& solvedOf(const std::vector<SolvedPatch>& solved, const std::s
 }
 
 }  // namespace
+
+JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const SolvedPatch& target) {
+  const SeparableSurface& ts = target.surface;
+  JoinRanges r;
+  r.part = !std::isnan(m.targetFrom);
+  r.a0 = r.part ? m.targetFrom : m.alongU ? ts.u0 : ts.v0;
+  r.a1 = r.part ? m.targetTo : m.alongU ? ts.u1 : ts.v1;
+  r.p0 = m.v0, r.p1 = m.v1;
+  if (std::isnan(r.p0)) {
+    const bool sameV = target.patch->kind == PatchKind::Pde;
+    r.p0 = sameV ? r.a0 : primary.v0;
+    r.p1 = sameV ? r.a1 : primary.v1;
+  }
+  return r;
+}
 
 const char* levelName(int level) { return level <= 0 ? "G0" : level == 1 ? "G1" : "G2"; }
 

@@ -51,6 +51,16 @@ const char* levelName(int level);  // "G0", "G1", "G2"
 // measures its fitted faces through the same door (cad/fitted_joins.hpp).
 using EdgeReader = std::function<std::vector<EdgePoint>(const SolvedPatch& patch, bool alongU, int end, const std::vector<double>& at)>;
 
+// The parameter ranges of one join (a Meets on `primary`): the target's border a0..a1 (a
+// fill's side: its part, part = true) and the met edge's p0..p1 (given, else the same v as a
+// PDE target, else the primary's v-range), before Meets::reversed. The certificate reads them,
+// and the CAD topology (cad/border_joins.cpp).
+struct JoinRanges {
+  bool part = false;
+  double a0 = 0, a1 = 0, p0 = 0, p1 = 0;
+};
+JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const SolvedPatch& target);
+
 // sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf). The verdicts (ok)
 // are the solved surfaces' tolerances; another reader's caller judges its own.
 std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize,

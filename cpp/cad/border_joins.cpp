@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/join_certificate.hpp"
 #include "common/errors.hpp"
 
 namespace pdesurf {
@@ -67,25 +68,18 @@ std::vector<BorderJoin> borderJoins(const std::vector<SolvedPatch>& solved) {
   std::vector<BorderJoin> out;
   for (size_t i = 0; i < solved.size(); ++i) {
     const Patch& primary = *solved[i].patch;
-    const SeparableSurface& ps = solved[i].surface;
     for (const Meets& m : primary.meets) {
       const size_t t = indexOf(solved, m.patch);
       const SeparableSurface& ts = solved[t].surface;
       BorderJoin j;
       j.a.face = t;
       j.a.border = m.alongU ? 2 + m.end : m.end;
-      // As the certificate reads them (analysis/join_certificate.cpp, certifyOne).
-      const bool part = !std::isnan(m.targetFrom);
-      j.a.from = part ? m.targetFrom : m.alongU ? ts.u0 : ts.v0;
-      j.a.to = part ? m.targetTo : m.alongU ? ts.u1 : ts.v1;
+      // As the certificate reads them.
+      const JoinRanges r = joinRanges(m, solved[i].surface, solved[t]);
+      j.a.from = r.a0, j.a.to = r.a1;
       j.b.face = i;
       j.b.border = m.sourceEdge < 0 ? (m.atT1 ? 1 : 0) : m.sourceEdge;
-      double p0 = m.v0, p1 = m.v1;
-      if (std::isnan(p0)) {
-        const bool sameV = solved[t].patch->kind == PatchKind::Pde;
-        p0 = sameV ? j.a.from : j.b.border >= 2 ? ps.u0 : ps.v0;
-        p1 = sameV ? j.a.to : j.b.border >= 2 ? ps.u1 : ps.v1;
-      }
+      double p0 = r.p0, p1 = r.p1;
       if (m.reversed) std::swap(p0, p1);
       j.b.from = p0, j.b.to = p1;
       j.eased = m.eased;
