@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cad/border_joins.hpp"
-#include "cad/brep_topology.hpp"
 #include "cad/creases.hpp"
 #include "surface/combine_rows.hpp"
 #include "surface/tabulation.hpp"
@@ -59,7 +57,7 @@ void integrate(const SeparableSurface& s, double* area, double* volume) {
 
 }  // namespace
 
-std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize) {
+SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize) {
   const double tol = kJoinTolerance * sceneSize;
   std::vector<TopologyFace> faces;
   for (const SolvedPatch& sp : solved) {
@@ -87,7 +85,14 @@ std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double s
     integrate(s, &f.area, &f.signedVolume);
     faces.push_back(std::move(f));
   }
-  const BrepTopology t = buildTopology(faces, borderJoins(solved), tol);
+  SolvedTopology out{std::move(faces), borderJoins(solved), {}};
+  out.topology = buildTopology(out.faces, out.joins, tol);
+  return out;
+}
+
+std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize) {
+  const SolvedTopology st = solvedTopology(solved, sceneSize);
+  const BrepTopology& t = st.topology;
   std::vector<Body> out;
   for (const BrepShell& sh : t.shells) {
     Body b;

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "cad/border_joins.hpp"
+#include "cad/brep_topology.hpp"
+#include "cad/topology_face.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
@@ -21,5 +24,15 @@ struct Body {
 // they are within 1e-8 of it. Area and volume: Gauss-Legendre, 4 points a cell, cells cut at the
 // surfaces' creases (a fill's corners) and graded towards u = 0 (a lift's decay).
 std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize);
+
+// What measureBodies builds on, for others that follow the bodies (analysis/watertight_mesh):
+// the solved patches as faces (their eval refers to `solved`, which must outlive them), the
+// joins, and the topology at the bodies' tolerance.
+struct SolvedTopology {
+  std::vector<TopologyFace> faces;
+  std::vector<BorderJoin> joins;
+  BrepTopology topology;
+};
+SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize);
 
 }  // namespace pdesurf

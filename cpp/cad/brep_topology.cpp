@@ -246,12 +246,14 @@ class Builder {
       e.start = vertex(2 * id), e.end = vertex(2 * id + 1);
       const bool seam = faces_[size_t(owner.face)].closedV && owner.border == 2;
       e.uses = owner.partner >= 0 || seam ? 2 : 1;
+      e.face = owner.face, e.border = owner.border, e.t0 = owner.t0, e.t1 = owner.t1;
       e.gap = owner.gap;
       out_.edgeGap = std::max(out_.edgeGap, e.gap);
       owner.edge = int(out_.edges.size()), owner.edgeForward = true;
       if (owner.partner >= 0) {
         Segment& other = segments_[size_t(owner.partner)];
         other.edge = owner.edge, other.edgeForward = owner.sameWay;
+        e.otherFace = other.face, e.otherBorder = other.border, e.join = owner.join;
         if (faces_[size_t(owner.face)].spline) {
           e.pcurves.push_back(pcurveOf(owner, nullptr));
           e.pcurves.push_back(pcurveOf(other, &joins_[size_t(owner.join)]));

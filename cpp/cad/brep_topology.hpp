@@ -35,6 +35,11 @@ struct BrepEdge {
   // Hermite pieces). Free edges and seams: none (a reader takes the face's own iso-line).
   std::vector<BrepPcurve> pcurves;
   int uses = 0;            // 1: a free (open) border; 2: shared, or a seam
+  // Where it lies: along `border` of `face` from t0 to t1 (the curve's own parameter); a shared
+  // edge also along `otherBorder` of `otherFace`, at mapBtoA(joins[join], t) there.
+  int face = 0, border = 0;
+  double t0 = 0, t1 = 0;
+  int otherFace = -1, otherBorder = 0, join = -1;
   double gap = 0;          // largest distance between the two sides' borders (sampled), scene units
 };
 
