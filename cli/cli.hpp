@@ -12,6 +12,7 @@ struct Options {
   double tolerance = 0.0;  // export to CAD: 0 is the default (1e-6 of the scene's diagonal)
   int degree = 5;
   bool gridGiven = false, json = false, controlNet = false;
+  bool loosePatches = false;  // export: each patch its own grid mesh (with texture coordinates), not joined
 };
 
 // Throws std::runtime_error with a usage message.

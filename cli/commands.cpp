@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "analysis/join_certificate.hpp"
 #include "mesh_writers.hpp"
 #include "number_text.hpp"
 #include "common/errors.hpp"
@@ -67,27 +68,45 @@ int runSample(const Options& o, std::ostream& out) {
   return 0;
 }
 
+namespace {
+
+// Each patch its own nu×nv grid (tessellate's layout and (u, v)), nothing shared.
+ModelMesh loosePatches(const std::vector<SolvedPatch>& solved, int nu, int nv) {
+  ModelMesh out;
+  for (const SolvedPatch& sp : solved) {
+    Mesh m;
+    try {
+      m = tessellate(sp.surface, nu, nv);
+    } catch (const Error& e) {
+      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+    }
+    ModelMesh::Part part;
+    part.name = sp.patch->name;
+    const uint32_t base = uint32_t(out.vertexCount());
+    for (uint32_t i : m.indices) part.indices.push_back(base + i);
+    out.positions.insert(out.positions.end(), m.positions.begin(), m.positions.end());
+    out.normals.insert(out.normals.end(), m.normals.begin(), m.normals.end());
+    out.uvs.insert(out.uvs.end(), m.uvs.begin(), m.uvs.end());
+    out.parts.push_back(std::move(part));
+  }
+  return out;
+}
+
+}  // namespace
+
 int runExport(const Options& o) {
-  if (const CadFormat cad = cadFormatOf(o); cad != CadFormat::None) return runCadExport(o, cad, std::cout);
+  if (const CadFormat cad = cadFormatOf(o); cad != CadFormat::None) {
+    if (o.loosePatches) throw std::runtime_error("--patches applies to mesh formats (obj, stl, ply, glb) only");
+    return runCadExport(o, cad, std::cout);
+  }
   const Scene scene = parseScene(readFile(o.scenePath));
   checkSceneGrid(scene, o.nu, o.nv);
   const MeshFormat format = o.format.empty() ? meshFormatFromPath(o.output) : parseMeshFormat(o.format);
   const auto solved = solveScene(scene);
-  ExportInfo info{scene.title, {}, o.nu, o.nv};
-  for (const SolvedPatch& sp : solved) info.names.push_back(sp.patch->name);
+  const ModelMesh mesh = o.loosePatches ? loosePatches(solved, o.nu, o.nv) : watertightMesh(solved, sceneSizeOf(solved), o.nu, o.nv);
   std::ofstream f(o.output, std::ios::binary);
   if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
-  const auto writer = makeMeshWriter(format, f, "'" + o.output + "'", info);
-  for (const SolvedPatch& sp : solved) {
-    Mesh m;
-    try {
-      m = tessellate(sp.surface, o.nu, o.nv);
-    } catch (const Error& e) {
-      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
-    }
-    writer->add(sp.patch->name, std::move(m));
-  }
-  writer->finish();
+  writeMesh(format, f, "'" + o.output + "'", scene.title, mesh);
   f.close();
   if (!f) throw std::runtime_error("writing '" + o.output + "' failed");
   return 0;

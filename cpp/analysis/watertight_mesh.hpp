@@ -18,6 +18,7 @@ namespace pdesurf {
 struct ModelMesh {
   std::vector<float> positions;  // 3 per vertex, shared by the parts
   std::vector<float> normals;    // 3 per vertex, unit, outward on a closed body
+  std::vector<float> uvs;        // 2 per vertex, or none (a shared vertex has no one (u, v))
   struct Part {
     std::string name;               // the patch
     int body = 0;                   // its body (measureBodies' order)

@@ -45,15 +45,24 @@ test('sample --patch picks a primary surface', () => {
   assert.ok(rows.every((row) => Math.abs(row[4]) < 1e-15), 'the plane is z = 0');
 });
 
-test('export writes an OBJ with every patch', () => {
+test('export writes an OBJ with every patch: joined (the blend\'s two rings shared), or --patches each its own grid', () => {
   const dir = mkdtempSync(join(tmpdir(), 'pdesurf-cli-'));
   const out = join(dir, 'fig4a.obj');
-  const r = run('export', example('you2004-fig4a'), '-o', out, '--grid', '8x8');
-  assert.equal(r.status, 0, r.stderr);
-  const obj = readFileSync(out, 'utf8');
+  const loose = run('export', example('you2004-fig4a'), '-o', out, '--grid', '8x8', '--patches');
+  assert.equal(loose.status, 0, loose.stderr);
+  let obj = readFileSync(out, 'utf8');
   assert.deepEqual(obj.match(/^o .*/gm), ['o blend', 'o cylinder', 'o plane']);
   assert.equal(obj.match(/^v /gm).length, 3 * 81);
   assert.equal(obj.match(/^f /gm).length, 3 * 128);
+  const r = run('export', example('you2004-fig4a'), '-o', out, '--grid', '8x8');
+  assert.equal(r.status, 0, r.stderr);
+  obj = readFileSync(out, 'utf8');
+  assert.deepEqual(obj.match(/^o .*/gm), ['o blend', 'o cylinder', 'o plane']);
+  // All three are closed around v (8 columns, the seam not repeated). The blend comes first and
+  // writes its 9 rings; the cylinder and the plane share its end rings and write 8 of theirs.
+  const parts = obj.split(/^o .*$/m).slice(1);
+  assert.deepEqual(parts.map((p) => p.match(/^v /gm).length), [9 * 8, 8 * 8, 8 * 8]);
+  for (const part of parts) assert.equal(part.match(/^f /gm).length, 128);
 });
 
 test('errors go to stderr with exit code 1 and name the field', () => {

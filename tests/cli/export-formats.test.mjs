@@ -1,5 +1,6 @@
-// pdesurf export in every format (obj, stl, ply, glb) and sample's number text: each file read
-// back byte for byte and compared with the others and with sample's doubles.
+// pdesurf export --patches (each patch its own grid) in every format (obj, stl, ply, glb) and
+// sample's number text: each file read back byte for byte and compared with the others and with
+// sample's doubles. The joined (watertight) meshes: watertight-export.test.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
@@ -19,7 +20,7 @@ const PATCHES = ['blend', 'cylinder', 'plane']; // you2004-fig4a
 
 function exportAs(file, ...extra) {
   const out = join(dir, file);
-  const r = run('export', example('you2004-fig4a'), '-o', out, '--grid', `${NU}x${NV}`, ...extra);
+  const r = run('export', example('you2004-fig4a'), '-o', out, '--grid', `${NU}x${NV}`, '--patches', ...extra);
   assert.equal(r.status, 0, r.stderr);
   const b = readFileSync(out);
   return { bytes: b, view: new DataView(b.buffer, b.byteOffset, b.byteLength) };
@@ -131,7 +132,7 @@ test('PLY: binary little-endian header and counts, the OBJ\'s positions, normals
     'property float x', 'property float y', 'property float z', 'property float nx', 'property float ny', 'property float nz',
     `element face ${3 * TRIANGLES}`, 'property list uchar uint vertex_indices', 'end_header',
   ]);
-  assert.deepEqual(header.filter((l) => l.startsWith('comment patch ')), PATCHES.map((p) => `comment patch ${p}`));
+  assert.deepEqual(header.filter((l) => l.startsWith('comment patch ')), PATCHES.map((p) => `comment patch ${p} faces ${TRIANGLES}`));
   assert.equal(bytes.length, end + 3 * VERTICES * 24 + 3 * TRIANGLES * 13);
   const expected = obj.flatMap((o) => o.v.map((xyz, k) => [...f32(xyz), ...f32(o.vn[k])]));
   expected.forEach((want, k) => {
@@ -162,7 +163,7 @@ function readGlb({ bytes, view }) {
   return { gltf: JSON.parse(text), bin: 28 + jsonLength, binLength };
 }
 
-test('GLB: header, chunks, one named mesh per patch, accessors consistent with the binary chunk', () => {
+test('GLB: header, chunks, one named mesh per patch over the model\'s vertices, accessors consistent with the binary chunk', () => {
   const file = exportAs('fig4a.glb');
   const { view } = file;
   const { gltf, bin, binLength } = readGlb(file);
@@ -193,12 +194,13 @@ test('GLB: header, chunks, one named mesh per patch, accessors consistent with t
     const normal = read(primitive.attributes.NORMAL);
     const uv = read(primitive.attributes.TEXCOORD_0);
     const indices = read(primitive.indices);
-    assert.equal(position.a.count, VERTICES);
-    assert.deepEqual(position.values, o.v.map(f32));
-    assert.deepEqual(normal.values, o.vn.map(f32));
+    // One POSITION, NORMAL and TEXCOORD_0 for the model; each patch's indices into them.
+    assert.equal(position.a.count, PATCHES.length * VERTICES);
+    assert.deepEqual(position.values, obj.flatMap((x) => x.v.map(f32)));
+    assert.deepEqual(normal.values, obj.flatMap((x) => x.vn.map(f32)));
     // glTF's texture origin is the top left, OBJ's the bottom left: TEXCOORD_0 = (u, 1 - v).
-    assert.deepEqual(uv.values, o.vt.map(([u, v]) => [Math.fround(Number(u)), Math.fround(1 - Math.fround(Number(v)))]));
-    assert.deepEqual(indices.values.flat(), o.f.flat().map((i) => i - 1 - k * VERTICES));
+    assert.deepEqual(uv.values, obj.flatMap((x) => x.vt.map(([u, v]) => [Math.fround(Number(u)), Math.fround(1 - Math.fround(Number(v)))])));
+    assert.deepEqual(indices.values.flat(), o.f.flat().map((i) => i - 1));
     for (let d = 0; d < 3; ++d) {
       const column = position.values.map((p) => p[d]);
       assert.equal(position.a.min[d], Math.min(...column), `${node.name} min[${d}]`);
@@ -215,10 +217,10 @@ test('GLB: three.js GLTFLoader reads it in node', async () => {
   assert.deepEqual(meshes.map((m) => m.name), PATCHES);
   meshes.forEach((m, k) => {
     const g = m.geometry;
-    assert.equal(g.attributes.position.count, VERTICES);
+    assert.equal(g.attributes.position.count, PATCHES.length * VERTICES);
     assert.equal(g.index.count, 3 * TRIANGLES);
-    assert.deepEqual(Array.from(g.attributes.position.array), obj[k].v.flatMap(f32));
-    assert.deepEqual(Array.from(g.attributes.normal.array), obj[k].vn.flatMap(f32));
+    assert.deepEqual(Array.from(g.attributes.position.array), obj.flatMap((x) => x.v.flatMap(f32)));
+    assert.deepEqual(Array.from(g.index.array), obj[k].f.flat().map((i) => i - 1));
   });
 });
 
