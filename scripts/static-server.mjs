@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 // Tiny static server for the pdesurf modeller: serves only what the page needs (the
 // production build build/web/ as /app/, the sources web/ as /web/, examples/,
-// node_modules/three/, /pako/ and /rhino3dm/, and as /wasm/ the .js and .wasm files of
+// node_modules/three/, /pako/, /rhino3dm/, /@jscadui/3mf-export/ and /fflate/, and as /wasm/ the .js and .wasm files of
 // build/wasm/ or $PDESURF_WASM_DIR), every response with security headers (a CSP that allows
 // no inline script but the importmap, and eval only in the .3dm writer's worker), compressed
 // when the client accepts it (lib/encoded-body.mjs), with an ETag.
@@ -41,10 +41,11 @@ function sendText(res, status, text, extraHeaders = {}) {
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
 // examples it fetches, the docs its help links, and the npm packages it loads (pako: the
-// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js), and the benchmark's
+// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js; @jscadui/3mf-export and
+// fflate: the 3MF writer and its zip), and the benchmark's
 // bare three.js page (bench/pages/, scripts/bench-page.mjs).
 const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako'], ['node_modules', 'rhino3dm'],
-  ['bench', 'pages']];
+  ['node_modules', '@jscadui', '3mf-export'], ['node_modules', 'fflate'], ['bench', 'pages']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
 const WASM_FILE = /^[^./\\][^/\\]*\.(js|wasm)$/;

@@ -20,6 +20,7 @@
 using emscripten::val;
 using namespace pdesurf;
 using pdesurf::wasm::copyOut;
+using pdesurf::wasm::gridArg;
 using pdesurf::wasm::guarded;
 
 namespace {
@@ -189,17 +190,6 @@ val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool cr
     report.set("crossings", val::array());
   }
   return report;
-}
-
-// A grid size from JS: a number that is an integer (1.5 or "64" are refused, not truncated or
-// converted).
-int gridArg(const val& v, const char* name) {
-  const std::string type = v.typeOf().as<std::string>();
-  if (type != "number") throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not a " + type);
-  const double x = v.as<double>();
-  if (!(x == std::floor(x)) || std::fabs(x) > 1e9)
-    throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not " + std::to_string(x));
-  return static_cast<int>(x);  // the range: checkGrid
 }
 
 // What a kept mesh was made from: a pde patch's memoised solve (SolvedPatch::solveId) on a grid.

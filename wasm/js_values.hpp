@@ -3,6 +3,7 @@
 #pragma once
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -41,6 +42,17 @@ emscripten::val guarded(const char* hint, Body&& body) {
   } catch (const std::exception& e) {
     return failure("Internal", e.what());
   }
+}
+
+// A grid size from JS: a number that is an integer (1.5 or "64" are refused, not truncated or
+// converted).
+inline int gridArg(const emscripten::val& v, const char* name) {
+  const std::string type = v.typeOf().as<std::string>();
+  if (type != "number") throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not a " + type);
+  const double x = v.as<double>();
+  if (!(x == std::floor(x)) || std::fabs(x) > 1e9)
+    throw Error(ErrorCode::GridSize, std::string("grid ") + name + " must be an integer number, not " + std::to_string(x));
+  return static_cast<int>(x);  // the range: checkGrid
 }
 
 }  // namespace pdesurf::wasm

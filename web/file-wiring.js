@@ -1,5 +1,5 @@
-// Wiring of the "File" folder: exports (scene JSON, OBJ, STL, GLB, PNG, and STEP, IGES, 3dm
-// fitted in the solver's worker; web/export/) and
+// Wiring of the "File" folder: exports (scene JSON; OBJ, STL, GLB, 3MF of the watertight mesh
+// and STEP, IGES, 3dm fitted, both made in the solver's worker; PNG; web/export/) and
 // opening a scene file by the picker or by dropping it on the page (web/import/). A file
 // that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
 // surfaces, the panel, the example id and the URL hash. For the second case the scene shown
@@ -111,11 +111,23 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
     }, { label, said });
   }
 
-  // action: obj, stl or glb; run(module of export/mesh-export.js, surfaces) -> file data.
-  function meshFile(action, run, type) {
-    return () => exportWith(action, async () => {
-      if (!surfaces().children.length) throw new Error('no surface is drawn yet');
-      return { data: await run(await meshExport(), surfaces()), name: `${baseName()}.${action}`, type };
+  // The model's watertight mesh from the worker (modelMesh) on the page's grid, then the file.
+  const MESH_FILES = {
+    obj: { type: 'model/obj', write: (m, model, colours) => m.exportObj(model, colours) },
+    stl: { type: 'model/stl', write: (m, model, colours) => m.exportStl(model, colours) },
+    glb: { type: 'model/gltf-binary', write: (m, model, colours) => m.exportGlb(model, colours, baseName()) },
+    '3mf': { type: 'model/3mf', write: (m, model) => m.export3mf(model, state.scene?.title || baseName()) },
+  };
+  function meshFile(format) {
+    const { type, write } = MESH_FILES[format];
+    return exportWith(format, async () => {
+      if (!state.scene || !surfaces().children.length) throw new Error('no surface is drawn yet');
+      const [m, model] = await Promise.all([meshExport(), solver.modelMesh(state.text(), { nu: state.grid.nu, nv: state.grid.nv })]);
+      // A printer needs closed bodies: 3MF says which are not (open surfaces are the rule elsewhere).
+      const open = model.bodies.filter((b) => !b.closed).length;
+      const note = format === '3mf' && open ? `${open} of ${model.bodies.length} bod${model.bodies.length === 1 ? 'y is' : 'ies are'} open (not printable)` : null;
+      const bodies = model.bodies.map((b) => ({ closed: b.closed, volume: b.volume }));
+      return { data: await write(m, model, m.drawnColours(surfaces())), name: `${baseName()}.${format}`, type, note, record: { bodies } };
     });
   }
 
@@ -128,9 +140,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
       const text = (await sceneExport()).sceneFileText(state.scene);
       return { data: text, name: `${baseName()}.json`, type: 'application/json' };
     }),
-    obj: meshFile('obj', (m, s) => m.exportObj(s), 'model/obj'),
-    stl: meshFile('stl', (m, s) => m.exportStl(s), 'model/stl'),
-    glb: meshFile('glb', (m, s) => m.exportGlb(s, baseName()), 'model/gltf-binary'),
+    mesh: meshFile,
     cad: cadFile,
     png: ({ scale, transparent }) => exportWith('png', async () => {
       const { scene } = viewer.sceneGraph();

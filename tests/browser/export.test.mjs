@@ -1,9 +1,10 @@
 // Exports from the page's "File" folder (web/file-wiring.js, web/export/): each download is
-// caught and read back. OBJ: one "o" per patch, as many "v" lines as the page draws
-// vertices; binary STL: the header's triangle count is the mesh's and the file is 84 + 50
-// bytes per triangle; GLB: parsed by three's GLTFLoader in the page and by its chunks here,
-// one node per patch named after it with POSITION, NORMAL and indices, faces wound with
-// their normals, plain materials even while zebra shading is on; PNG: the drawing buffer
+// caught and read back. The meshes are the model's watertight one (the worker's modelMesh),
+// the CLI's own at the page's grid: OBJ one "o" per body, the CLI's vertices and faces;
+// binary STL the CLI's triangles, 84 + 50 bytes each; GLB parsed by three's GLTFLoader in the
+// page and by its chunks here, a node per body, a primitive per patch over one POSITION and
+// NORMAL, faces wound with their normals, plain materials in the patch colours even while
+// zebra shading is on; 3MF (the bottle) one object per body, accepted by manifold-3d; PNG: the drawing buffer
 // times 1, 2 or 4, colours as on screen, a transparent one with alpha 0 off the surface;
 // scene JSON: the page state, which the CLI reads to the same samples as the example file.
 // The production page (/app/, when built) loads the exporters from its lazy chunks.
@@ -17,6 +18,8 @@ import { execFileSync } from 'node:child_process';
 import { skip, startHarness, hooks, shoot, viewStats, solvedAfter, sameChecksum, OUT_DIR, ROOT, REPO, BACKGROUND } from './harness.mjs';
 import { decodePng } from './png-decode.mjs';
 import { blockAverage } from './image-diff.mjs';
+import { unzipSync, strFromU8 } from 'fflate';
+import Module from 'manifold-3d';
 
 const CLI = process.env.PDESURF_CLI || path.join(ROOT, 'build', 'native', 'pdesurf');
 const cli = fs.existsSync(CLI) ? CLI : null;
@@ -31,6 +34,20 @@ export async function download(page, key) {
   ]);
   const bytes = fs.readFileSync(await d.path());
   return { name: d.suggestedFilename(), bytes, ms: Date.now() - t0 };
+}
+
+/** The CLI's watertight OBJ of an example at a grid: { bodies: 'o' names, v, f } counts. */
+function cliMesh(id, nu, nv) {
+  const out = path.join(OUT_DIR, `cli-${id}.obj`);
+  execFileSync(CLI, ['export', path.join(ROOT, 'examples', `${id}.json`), '-o', out, '--grid', `${nu}x${nv}`]);
+  const text = fs.readFileSync(out, 'utf8');
+  return { v: (text.match(/^v /gm) || []).length, f: (text.match(/^f /gm) || []).length };
+}
+
+/** The bodies `check` finds, named as the page's exports name them (a lone patch's name, else "body N"). */
+function cliBodies(id) {
+  const { bodies } = JSON.parse(execFileSync(CLI, ['check', path.join(ROOT, 'examples', `${id}.json`), '--json'], { encoding: 'utf8' }));
+  return bodies.map((b, k) => ({ name: b.patches.length === 1 ? b.patches[0] : `body ${k + 1}`, patches: b.patches, closed: b.closed }));
 }
 
 /** GLB -> { json, bin } (checked: magic, version, chunk lengths). */
@@ -115,7 +132,7 @@ describe('exports from the page', { skip }, () => {
     await page.locator('#panel [data-folder="file"] > .title').click();
     // lil-gui animates the opening: wait for it to end.
     await page.waitForFunction(() => !document.querySelector('#panel [data-folder="file"]').matches('.closed, .transition'));
-    for (const key of ['open', 'json', 'obj', 'stl', 'glb', 'png']) {
+    for (const key of ['open', 'json', 'obj', 'stl', 'glb', '3mf', 'png']) {
       assert.ok(await page.locator(`#panel [data-file="${key}"] button`).isVisible(), key);
     }
     assert.deepEqual(await page.locator('#panel [data-file="png-scale"] option').allTextContents(), ['1×', '2×', '4×']);
@@ -125,55 +142,60 @@ describe('exports from the page', { skip }, () => {
   });
 
   for (const id of ['you2004-fig2a', 'wu2015-fig3']) {
-    it(`${id}: OBJ has the mesh's objects, vertices and faces`, async () => {
+    it(`${id}: OBJ has the model's bodies, the CLI's vertices and faces`, async () => {
       await openExample(id);
-      const names = exampleScene(id).patches.map((p) => p.name);
       const m = await mesh();
       const obj = await download(page, 'obj');
       assert.equal(obj.name, `${id}.obj`);
       const text = obj.bytes.toString('utf8');
       const count = (re) => (text.match(re) || []).length;
-      assert.equal(count(/^v /gm), m.vertices, 'v lines');
-      assert.equal(count(/^vn /gm), m.vertices, 'vn lines');
-      assert.equal(count(/^vt /gm), m.vertices, 'vt lines');
-      assert.equal(count(/^f /gm), names.length * 2 * m.nu * m.nv, 'f lines');
-      assert.deepEqual([...text.matchAll(/^o (.*)$/gm)].map((x) => x[1]), names);
+      const want = cliMesh(id, m.nu, m.nv);
+      assert.equal(count(/^v /gm), want.v, 'v lines');
+      assert.equal(count(/^vn /gm), want.v, 'vn lines');
+      assert.equal(count(/^f /gm), want.f, 'f lines');
+      assert.deepEqual([...text.matchAll(/^o (.*)$/gm)].map((x) => x[1]), cliBodies(id).map((b) => b.name.replace(/\s+/g, '_')), 'blanks as _ on an o line');
       assert.equal(count(/^usemtl /gm), 0, 'usemtl without an .mtl file');
       figures.push(`${id} OBJ ${(obj.bytes.length / 1024).toFixed(0)} KiB`);
     });
 
-    it(`${id}: binary STL has the mesh's triangles`, async () => {
-      const patches = exampleScene(id).patches.length;
+    it(`${id}: binary STL has the CLI's triangles`, async () => {
       const m = await mesh();
       const stl = await download(page, 'stl');
       assert.equal(stl.name, `${id}.stl`);
       const n = stl.bytes.readUInt32LE(80);
-      assert.equal(n, patches * 2 * m.nu * m.nv);
+      assert.equal(n, cliMesh(id, m.nu, m.nv).f);
       assert.equal(stl.bytes.length, 84 + 50 * n);
       figures.push(`${id} STL ${(stl.bytes.length / 1024).toFixed(0)} KiB`);
     });
 
-    it(`${id}: GLB has one node per patch with POSITION, NORMAL, indices, wound with its normals`, async () => {
-      const names = exampleScene(id).patches.map((p) => p.name);
+    it(`${id}: GLB has a node per body, a primitive per patch with POSITION, NORMAL, indices, wound with its normals`, async () => {
+      const bodies = cliBodies(id);
       const m = await mesh();
       const glb = await download(page, 'glb');
       assert.equal(glb.name, `${id}.glb`);
       const doc = readGlb(glb.bytes);
       const { json } = doc;
-      assert.deepEqual(json.nodes.map((n) => n.name), names);
-      assert.deepEqual(json.scenes[json.scene ?? 0].nodes.length, names.length);
-      const V = (m.nu + 1) * (m.nv + 1);
-      for (const node of json.nodes) {
+      assert.deepEqual(json.nodes.map((n) => n.name), bodies.map((b) => b.name));
+      assert.deepEqual(json.scenes[json.scene ?? 0].nodes.length, bodies.length);
+      const want = cliMesh(id, m.nu, m.nv);
+      let vertices = 0, triangles = 0;
+      for (const [k, node] of json.nodes.entries()) {
         const prims = json.meshes[node.mesh].primitives;
-        assert.equal(prims.length, 1);
-        const { attributes, indices, mode } = prims[0];
-        assert.ok(mode === undefined || mode === 4, 'triangles');
-        assert.equal(json.accessors[attributes.POSITION].count, V, `${node.name} POSITION`);
-        assert.equal(json.accessors[attributes.NORMAL].count, V, `${node.name} NORMAL`);
-        assert.equal(json.accessors[indices].count, 6 * m.nu * m.nv, `${node.name} indices`);
-        const agree = windingAgreement(accessorArray(doc, attributes.POSITION), accessorArray(doc, attributes.NORMAL), accessorArray(doc, indices));
-        assert.ok(agree > 0.99, `${node.name}: ${(100 * agree).toFixed(1)} % of the faces are wound with their normals`);
+        assert.equal(prims.length, bodies[k].patches.length, 'a primitive per patch');
+        assert.deepEqual(prims.map((p) => json.materials[p.material].name), bodies[k].patches);
+        const { attributes } = prims[0];
+        vertices += json.accessors[attributes.POSITION].count;
+        assert.equal(json.accessors[attributes.NORMAL].count, json.accessors[attributes.POSITION].count, `${node.name} NORMAL`);
+        for (const { attributes: a, indices, mode } of prims) {
+          assert.ok(mode === undefined || mode === 4, 'triangles');
+          assert.equal(a.POSITION, attributes.POSITION, 'the patches share the body\'s vertices');
+          triangles += json.accessors[indices].count / 3;
+          const agree = windingAgreement(accessorArray(doc, a.POSITION), accessorArray(doc, a.NORMAL), accessorArray(doc, indices));
+          assert.ok(agree > 0.99, `${node.name}: ${(100 * agree).toFixed(1)} % of the faces are wound with their normals`);
+        }
       }
+      assert.equal(vertices, want.v);
+      assert.equal(triangles, want.f);
       // Read back by three's own loader, in the page.
       const loaded = await page.evaluate(async (b64) => {
         const { GLTFLoader } = await import('three/addons/loaders/GLTFLoader.js');
@@ -181,19 +203,50 @@ describe('exports from the page', { skip }, () => {
         const gltf = await new GLTFLoader().parseAsync(bytes.buffer, '');
         const meshes = [];
         gltf.scene.traverse((o) => {
-          if (o.isMesh) meshes.push({ name: o.name, vertices: o.geometry.getAttribute('position').count, normals: Boolean(o.geometry.getAttribute('normal')), type: o.material.type });
+          if (!o.isMesh) return;
+          const position = o.geometry.getAttribute('position');
+          meshes.push({ first: !meshes.some((m) => m.position === position), position, vertices: position.count, normals: Boolean(o.geometry.getAttribute('normal')), type: o.material.type });
         });
-        return meshes;
+        return meshes.map(({ position, ...m }) => m);
       }, glb.bytes.toString('base64'));
-      assert.deepEqual(loaded.map((x) => x.name), names);
+      // A mesh of several primitives loads as a group of meshes, one per patch, over its vertices.
+      assert.equal(loaded.length, bodies.reduce((n, b) => n + b.patches.length, 0));
+      assert.equal(loaded.reduce((n, x) => n + (x.first ? x.vertices : 0), 0), want.v);
       for (const x of loaded) {
-        assert.equal(x.vertices, V);
         assert.ok(x.normals);
         assert.equal(x.type, 'MeshStandardMaterial');
       }
       figures.push(`${id} GLB ${(glb.bytes.length / 1024).toFixed(0)} KiB`);
     });
   }
+
+  it('3MF of the bottle: one object, a closed manifold (manifold-3d) with the exact volume to the mesh\'s accuracy', async () => {
+    await openExample('bottle-solid');
+    const m = await mesh();
+    const file = await download(page, '3mf');
+    assert.equal(file.name, 'bottle-solid.3mf');
+    const files = unzipSync(new Uint8Array(file.bytes));
+    assert.ok(files['[Content_Types].xml'] && files['_rels/.rels']);
+    const xml = strFromU8(files['3D/3dmodel.model']);
+    const objects = [...xml.matchAll(/<object id="\d+" type="model" name="([^"]*)">([\s\S]*?)<\/object>/g)];
+    assert.deepEqual(objects.map((o) => o[1]), ['body 1']);
+    const body = objects[0][2];
+    const positions = new Float32Array([...body.matchAll(/<vertex x="([^"]+)" y="([^"]+)" z="([^"]+)"/g)].flatMap((x) => x.slice(1).map(Number)));
+    const triangles = new Uint32Array([...body.matchAll(/<triangle v1="(\d+)" v2="(\d+)" v3="(\d+)"/g)].flatMap((x) => x.slice(1).map(Number)));
+    const want = cliMesh('bottle-solid', m.nu, m.nv);
+    assert.equal(positions.length / 3, want.v);
+    assert.equal(triangles.length / 3, want.f);
+    const wasm = await Module();
+    wasm.setup();
+    const solid = new wasm.Manifold(new wasm.Mesh({ numProp: 3, vertProperties: positions, triVerts: triangles }));
+    assert.equal(solid.genus(), 0);
+    assert.ok(cliBodies('bottle-solid')[0].closed);
+    const { bodies } = JSON.parse(execFileSync(CLI, ['check', path.join(ROOT, 'examples', 'bottle-solid.json'), '--json'], { encoding: 'utf8' }));
+    // The mesh's own error at the page's grid: O(h²), 0.16 % at 64².
+    assert.ok(Math.abs(solid.volume() - bodies[0].volume) < 4e-3 * bodies[0].volume, `${solid.volume()} against ${bodies[0].volume}`);
+    await page.waitForFunction(() => /^saved bottle-solid\.3mf \(\d+ KiB\)$/.test(document.querySelector('#status').textContent));
+    figures.push(`bottle 3MF ${(file.bytes.length / 1024).toFixed(0)} KiB, manifold volume ${solid.volume().toFixed(5)} (exact ${bodies[0].volume.toFixed(5)})`);
+  });
 
   it('GLB materials are the patch colours even while zebra shading is on', async () => {
     await openExample('you2004-fig2a');
@@ -203,7 +256,7 @@ describe('exports from the page', { skip }, () => {
     await page.waitForFunction(() => window.__pdesurf.analysis()?.mode === 'zebra');
     const zebra = readGlb((await download(page, 'glb')).bytes).json.materials;
     assert.deepEqual(zebra, plain);
-    assert.deepEqual(plain.map((x) => x.name).sort(), ['primary', 'solved']);
+    assert.deepEqual(plain.map((x) => x.name).sort(), exampleScene('you2004-fig2a').patches.map((p) => p.name).sort(), 'a material per patch');
     for (const x of plain) {
       assert.equal(x.doubleSided, true);
       assert.equal(x.extensions, undefined, 'a shader leaked into the file');
@@ -329,7 +382,8 @@ describe('exports from the page', { skip }, () => {
     const m = await app.evaluate(() => ({ ...window.__pdesurf.lastSolve }));
     for (const [key, check] of [
       ['glb', (b) => assert.deepEqual(readGlb(b).json.nodes.map((n) => n.name), ['hat'])],
-      ['stl', (b) => assert.equal(b.readUInt32LE(80), 2 * m.nu * m.nv)],
+      ['stl', (b) => assert.equal(b.readUInt32LE(80), 2 * m.nu * m.nv)], // one open patch: its grid's triangles
+      ['3mf', (b) => assert.match(strFromU8(unzipSync(new Uint8Array(b))['3D/3dmodel.model']), /<object id="1" type="model" name="hat">/)],
       ['png', (b) => assert.ok(decodePng(b).width > 0)],
     ]) {
       const [d] = await Promise.all([app.waitForEvent('download', { timeout: 60_000 }), app.locator(`#panel [data-file="${key}"] button`).click()]);

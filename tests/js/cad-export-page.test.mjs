@@ -127,7 +127,7 @@ describe('exports in the solver client', () => {
   it('errors keep the core code; a second export at once is refused; a dead worker fails the export', async () => {
     const { c, w } = client();
     const p = c.exportCad('{}', { format: 'step', tolerance: 1e-300 });
-    await assert.rejects(c.exportCad('{}', {}), /another CAD export is running/);
+    await assert.rejects(c.exportCad('{}', {}), /another export is running/);
     w.reply({ id: w.sent[0].id, kind: 'exportCad', ok: false, error: { code: 'TooLarge', message: "patch 'blend': …" }, ms: 9 });
     await assert.rejects(p, (e) => e.code === 'TooLarge' && e.message === "patch 'blend': …");
     const q = c.exportCad('{}', { format: 'step' });

@@ -70,7 +70,29 @@ export async function loadSolver(opts = {}) {
     module: Module,
     solve: (scene, grid = {}) => solveWith(Module, scene, grid),
     exportCad: (scene, options = {}) => exportCadWith(Module, scene, options),
+    modelMesh: (scene, grid = {}) => modelMeshWith(Module, scene, grid),
   };
+}
+
+// The model's watertight mesh for the mesh exports (docs/wasm-api.md, modelMesh): { title,
+// positions, normals (Float32Array, shared by the patches), parts: [{ name, body, indices }],
+// bodies: [{ closed, area, volume?, freeEdges }] }.
+function modelMeshWith(Module, scene, { nu = 64, nv = 64 } = {}) {
+  if (typeof Module.modelMesh !== 'function') {
+    throw new PdesurfError('Load', 'this solver module has no modelMesh: rebuild the wasm module');
+  }
+  let res;
+  try {
+    res = Module.modelMesh(sceneText(scene), nu, nv);
+  } catch (err) {
+    throw new PdesurfError('Internal', err instanceof Error ? err.message : `modelMesh threw ${String(err)}`);
+  }
+  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', 'modelMesh returned no result');
+  if (!res.ok) {
+    const e = res.error || {};
+    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown mesh error'));
+  }
+  return { title: res.title, positions: res.positions, normals: res.normals, parts: Array.from(res.parts), bodies: Array.from(res.bodies) };
 }
 
 // Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text

@@ -8,6 +8,7 @@
 //   .busy()        true while a solve runs
 //   .restarts      how many solves were cancelled (for tests)
 //   .exportCad(scene (text), { format, tolerance }) -> promise of the module's exportCad
+//   .modelMesh(scene (text), { nu, nv }) -> promise of the module's modelMesh (one export at a time, as CAD's)
 //                  result ({ title, tolerance, faces, text? }, plus ms: the worker's time), or
 //                  an Error with the core's code. One at a time; it runs between solves, never
 //                  beside one (the worker is one thread): a solve asked for meanwhile waits
@@ -32,8 +33,8 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let worker = null;
   let running = null; // { id, job, started }
   let waiting = null; // { job, since }
-  let exporting = null; // { id, resolve, reject }: a CAD export in the worker
-  let exportWaiting = null; // { scene, options, resolve, reject }: one asked for during a solve
+  let exporting = null; // { id, resolve, reject }: an export (CAD or mesh) in the worker
+  let exportWaiting = null; // { kind, scene, options, resolve, reject }: one asked for during a solve
   let nextId = 1;
   let lastMs = 0;
   let latestToken = null;
@@ -87,10 +88,10 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     }, BUSY_AFTER_MS);
   }
 
-  function dispatchExport({ scene, options, resolve, reject }) {
+  function dispatchExport({ kind, scene, options, resolve, reject }) {
     if (!worker) spawn();
     exporting = { id: nextId++, resolve, reject };
-    worker.postMessage({ id: exporting.id, kind: 'exportCad', scene, options });
+    worker.postMessage({ id: exporting.id, kind, scene, options });
   }
 
   // An export asked for goes first: it is one click, where waiting solves are coalesced edits.
@@ -120,7 +121,7 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   }
 
   function finished(msg) {
-    if (msg.kind === 'exportCad') {
+    if (msg.kind === 'exportCad' || msg.kind === 'modelMesh') {
       exported(msg);
       return;
     }
@@ -207,15 +208,17 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     return () => {};
   };
   client.busy = () => running !== null;
-  client.exportCad = (scene, options) => new Promise((resolve, reject) => {
+  const exportJob = (kind) => (scene, options) => new Promise((resolve, reject) => {
     if (exporting || exportWaiting) {
-      reject(new Error('another CAD export is running'));
+      reject(new Error('another export is running'));
       return;
     }
-    const req = { scene, options, resolve, reject };
+    const req = { kind, scene, options, resolve, reject };
     if (running) exportWaiting = req; // after this solve (next())
     else dispatchExport(req);
   });
+  client.exportCad = exportJob('exportCad');
+  client.modelMesh = exportJob('modelMesh');
   return client;
 }
 

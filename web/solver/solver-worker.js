@@ -10,6 +10,9 @@
 //   in:  { id, kind: 'exportCad', scene, options: { format, tolerance } }
 //   out: { id, kind: 'exportCad', ok: true, result: { title, tolerance, faces, text? }, ms }
 //        with the faces' knots and poles transferred, or the same failure as a solve
+// The model's watertight mesh (the File folder's OBJ, STL, GLB, 3MF; modelMesh):
+//   in:  { id, kind: 'modelMesh', scene, options: { nu, nv } }
+//   out: { id, kind: 'modelMesh', ok: true, result: { title, positions, normals, parts, bodies }, ms }
 // uvs and indices are never sent: they depend on the grid alone and the page builds them
 // (viewer/grid-topology.js).
 import { loadSolver } from './pdesurf-solver.js';
@@ -74,6 +77,10 @@ const run = {
   exportCad: (solver, scene, { format, tolerance }) => {
     const result = solver.exportCad(scene, { format, tolerance });
     return [result, transferablesOf(result.faces)];
+  },
+  modelMesh: (solver, scene, { nu, nv }) => {
+    const result = solver.modelMesh(scene, { nu, nv });
+    return [result, transferablesOf([result, ...result.parts])];
   },
 };
 

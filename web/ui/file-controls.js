@@ -1,16 +1,16 @@
-// The "File" folder: open a scene file, and export the scene (JSON), the patches as meshes
-// (OBJ, STL, GLB) or as certified B-spline faces for CAD (STEP, IGES, 3dm, at a tolerance
+// The "File" folder: open a scene file, and export the scene (JSON), the model as watertight
+// meshes (OBJ, STL, GLB, 3MF) or as certified B-spline faces for CAD (STEP, IGES, 3dm, at a tolerance
 // typed here; empty: the core's default) and the view (PNG at 1×, 2× or 4× the canvas,
 // optionally transparent). Names go through escapeHtml (lil-gui writes them as markup); the
 // CAD line under the buttons is written with textContent only. DOM hooks: data-file="open" |
-// "json" | "obj" | "stl" | "glb" | "cad-tolerance" | "step" | "iges" | "3dm" | "cad-message" |
+// "json" | "obj" | "stl" | "glb" | "3mf" | "cad-tolerance" | "step" | "iges" | "3dm" | "cad-message" |
 // "png" | "png-scale" | "png-transparent".
 import { escapeHtml } from './html-text.js';
 
 export const PNG_SCALES = { '1×': 1, '2×': 2, '4×': 4 };
 
 /**
- * handlers: { open(), json(), obj(), stl(), glb(), cad(format, toleranceText) with format
+ * handlers: { open(), json(), mesh(format) with format 'obj' | 'stl' | 'glb' | '3mf', cad(format, toleranceText) with format
  * 'step' | 'iges' | '3dm', png({ scale, transparent }) }.
  * Returns { folder (its element), sayCad(text, kind) (the CAD line: kind null, 'warn' or 'error') }.
  */
@@ -22,9 +22,6 @@ export function buildFileFolder(gui, handlers) {
   const actions = {
     open: () => handlers.open(),
     json: () => handlers.json(),
-    obj: () => handlers.obj(),
-    stl: () => handlers.stl(),
-    glb: () => handlers.glb(),
     png: () => handlers.png({ ...png }),
   };
   const button = (key, label, title) => {
@@ -35,16 +32,14 @@ export function buildFileFolder(gui, handlers) {
   };
   button('open', 'open scene file…', 'open a scene (.json) from this computer; or drop the file on the page');
   button('json', 'export scene JSON', 'the scene as a file the page and the pdesurf CLI open');
-  button('obj', 'export OBJ', 'the patches as a Wavefront OBJ mesh (one object per patch)');
-  button('stl', 'export STL', 'the patches as a binary STL mesh');
-  button('glb', 'export GLB', 'the patches as glTF 2.0 (binary), one node per patch');
+  folder.$children.append(buttonRow('export mesh', MESH_BUTTONS, (format) => handlers.mesh(format)));
   const tol = folder.add(cad, 'tolerance').name(escapeHtml('CAD tolerance'));
   tol.domElement.dataset.file = 'cad-tolerance';
   tol.domElement.title = 'the largest distance allowed between a patch and its B-spline face, in scene units (e.g. 1e-4); empty: 1e-6 of the scene\'s diagonal';
   tol.$input.placeholder = 'default';
   tol.$input.inputMode = 'decimal';
   tol.$input.spellcheck = false;
-  folder.$children.append(cadRow((format) => handlers.cad(format, cad.tolerance)));
+  folder.$children.append(buttonRow('export CAD', CAD_BUTTONS, (format) => handlers.cad(format, cad.tolerance)));
   // What the last CAD export achieved, or why it failed: text only (patch names come from links).
   const message = document.createElement('div');
   message.className = 'cad-message';
@@ -68,24 +63,33 @@ export function buildFileFolder(gui, handlers) {
   };
 }
 
+// The model's mesh: the patches share the vertices of their joins, so a closed model is one
+// watertight body (printable); one object per body.
+const MESH_BUTTONS = [
+  ['obj', 'OBJ', 'the model as a Wavefront OBJ mesh, one object per body, watertight along every join'],
+  ['stl', 'STL', 'the model as a binary STL mesh, watertight along every join'],
+  ['glb', 'GLB', 'the model as glTF 2.0 (binary): a mesh per body, a primitive per patch'],
+  ['3mf', '3MF', 'the model as a 3MF file for printing, one object per body'],
+];
+
 const CAD_BUTTONS = [
   ['step', 'STEP', 'every patch as a certified B-spline face in a STEP file (AP214)'],
   ['iges', 'IGES', 'every patch as a certified B-spline surface in an IGES file (type 128)'],
   ['3dm', '3dm', 'every patch as a certified NURBS surface in a Rhino .3dm file (loads rhino3dm, 0.8 MB, on first use)'],
 ];
 
-// "export CAD [STEP] [IGES] [3dm]": one row in lil-gui's own classes (a row per format took the
-// folder past the sheet of a phone with touch-sized rows). Each button is "export FORMAT" to
-// assistive technology; built with textContent only.
-function cadRow(onExport) {
+// "export CAD [STEP] [IGES] [3dm]", "export mesh [OBJ] …": one row in lil-gui's own classes (a
+// row per format took the folder past the sheet of a phone with touch-sized rows). Each button
+// is "export FORMAT" to assistive technology; built with textContent only.
+function buttonRow(text, buttons, onExport) {
   const row = document.createElement('div');
   row.className = 'controller cad-export';
   const name = document.createElement('div');
   name.className = 'name';
-  name.textContent = 'export CAD';
+  name.textContent = text;
   const widget = document.createElement('div');
   widget.className = 'widget';
-  for (const [key, label, title] of CAD_BUTTONS) {
+  for (const [key, label, title] of buttons) {
     const slot = document.createElement('span');
     slot.dataset.file = key;
     const b = document.createElement('button');
