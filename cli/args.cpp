@@ -14,7 +14,8 @@ const char* kUsage =
     "  pdesurf sample SCENE.json [--patch NAME] [--grid NUxNV] [--method M]   print u,v,x,y,z on the grid\n"
     "  pdesurf sample SCENE.json --control-net [--patch NAME]                 print a Bezier patch's solved control points\n"
     "  pdesurf export SCENE.json -o FILE [--format F] [--grid NUxNV]          the model's mesh to FILE, F: obj (text),\n"
-    "      stl, ply (binary) or glb (glTF 2.0 binary); default: FILE's extension, else obj. Patches share\n"
+    "      stl, ply (binary), glb (glTF 2.0 binary) or 3mf (for printing, an object per body); default:\n"
+    "      FILE's extension, else obj. Patches share\n"
     "      their vertices along every join (watertight); --patches: each its own grid, with (u, v)\n"
     "  pdesurf export SCENE.json -o FILE.step|.igs [--tol T] [--degree 3|5]  every patch as a B-spline face within the\n"
     "      certified deviation T (scene units; default 1e-6 of the scene's diagonal); STEP AP214 or IGES 5.3\n"
@@ -81,7 +82,7 @@ Options parseArgs(const std::vector<std::string>& args) {
     else throw std::runtime_error("unexpected argument '" + a + "'");
   }
   if (o.scenePath.empty()) throw std::runtime_error(o.command == "decode-link" ? "missing the link" : "missing SCENE.json");
-  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply, .glb, .step, .stp, .igs or .iges)");
+  if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply, .glb, .3mf, .step, .stp, .igs or .iges)");
   if (o.command != "export" && !o.format.empty()) throw std::runtime_error("--format applies to export only");
   if (o.command != "export" && o.loosePatches) throw std::runtime_error("--patches applies to export only");
   if (o.command != "export" && (o.tolerance > 0 || o.degree != 5)) throw std::runtime_error("--tol and --degree apply to export only");

@@ -7,6 +7,7 @@
 #include "cli.hpp"
 #include "analysis/join_certificate.hpp"
 #include "mesh_writers.hpp"
+#include "three_mf_writer.hpp"
 #include "number_text.hpp"
 #include "common/errors.hpp"
 #include "scene/scene.hpp"
@@ -104,6 +105,10 @@ int runExport(const Options& o) {
   const MeshFormat format = o.format.empty() ? meshFormatFromPath(o.output) : parseMeshFormat(o.format);
   const auto solved = solveScene(scene);
   const ModelMesh mesh = o.loosePatches ? loosePatches(solved, o.nu, o.nv) : watertightMesh(solved, sceneSizeOf(solved), o.nu, o.nv);
+  if (format == MeshFormat::ThreeMf) {
+    write3mf(o.output, scene.title, mesh);
+    return 0;
+  }
   std::ofstream f(o.output, std::ios::binary);
   if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
   writeMesh(format, f, "'" + o.output + "'", scene.title, mesh);

@@ -22,7 +22,8 @@ MeshFormat parseMeshFormat(const std::string& name) {
   if (name == "stl") return MeshFormat::Stl;
   if (name == "ply") return MeshFormat::Ply;
   if (name == "glb") return MeshFormat::Glb;
-  throw std::runtime_error("unknown --format '" + oneLine(name) + "': expected obj, stl, ply, glb, step, stp, iges or igs");
+  if (name == "3mf") return MeshFormat::ThreeMf;
+  throw std::runtime_error("unknown --format '" + oneLine(name) + "': expected obj, stl, ply, glb, 3mf, step, stp, iges or igs");
 }
 
 MeshFormat meshFormatFromPath(const std::string& path) {
@@ -34,6 +35,7 @@ MeshFormat meshFormatFromPath(const std::string& path) {
   if (ext == "stl") return MeshFormat::Stl;
   if (ext == "ply") return MeshFormat::Ply;
   if (ext == "glb") return MeshFormat::Glb;
+  if (ext == "3mf") return MeshFormat::ThreeMf;
   return MeshFormat::Obj;
 }
 
@@ -160,6 +162,7 @@ void writePly(OutBuffer& b, const std::string& title, const ModelMesh& m) {
 }  // namespace
 
 void writeMesh(MeshFormat format, std::ostream& out, const std::string& what, const std::string& title, const ModelMesh& mesh) {
+  if (format == MeshFormat::ThreeMf) throw std::logic_error("3MF is written by write3mf (to a file)");
   if (format == MeshFormat::Glb) return detail::writeGlb(out, what, title, mesh);
   OutBuffer b(out, what);
   switch (format) {

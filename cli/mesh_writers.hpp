@@ -17,9 +17,9 @@
 
 namespace pdesurf::cli {
 
-enum class MeshFormat { Obj, Stl, Ply, Glb };
+enum class MeshFormat { Obj, Stl, Ply, Glb, ThreeMf };  // 3mf: three_mf_writer.hpp
 
-// "obj", "stl", "ply", "glb"; anything else throws std::runtime_error naming the choices.
+// "obj", "stl", "ply", "glb", "3mf"; anything else throws std::runtime_error naming the choices.
 MeshFormat parseMeshFormat(const std::string& name);
 // From the file name's extension (case-insensitive); obj when it names none of the formats.
 MeshFormat meshFormatFromPath(const std::string& path);

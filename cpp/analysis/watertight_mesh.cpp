@@ -234,4 +234,31 @@ ModelMesh watertightMesh(const std::vector<SolvedPatch>& solved, double sceneSiz
   return MeshBuilder(solved, st, nu, nv).run();
 }
 
+std::vector<BodyMesh> bodyMeshes(const ModelMesh& mesh) {
+  int bodies = 0;
+  for (const ModelMesh::Part& p : mesh.parts) bodies = std::max(bodies, p.body + 1);
+  std::vector<BodyMesh> out(static_cast<size_t>(bodies));
+  std::vector<int> patches(static_cast<size_t>(bodies), 0);
+  // A vertex's number in the body being numbered (two bodies may touch at a point): bodies
+  // one after the other, so a tag from another body is never taken for this one's.
+  std::vector<std::pair<int, uint32_t>> local(mesh.vertexCount(), {-1, 0});
+  for (int body = 0; body < bodies; ++body) {
+    BodyMesh& b = out[size_t(body)];
+    for (const ModelMesh::Part& p : mesh.parts) {
+      if (p.body != body) continue;
+      if (patches[size_t(body)]++ == 0) b.name = p.name;
+      for (uint32_t v : p.indices) {
+        if (local[v].first != body) {
+          local[v] = {body, uint32_t(b.positions.size() / 3)};
+          b.positions.insert(b.positions.end(), {mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1], mesh.positions[3 * size_t(v) + 2]});
+        }
+        b.indices.push_back(local[v].second);
+      }
+    }
+  }
+  for (size_t k = 0; k < out.size(); ++k)
+    if (patches[k] != 1) out[k].name = "body " + std::to_string(k + 1);
+  return out;
+}
+
 }  // namespace pdesurf

@@ -28,6 +28,16 @@ struct ModelMesh {
   size_t vertexCount() const { return positions.size() / 3; }
 };
 
+// One body's own vertices (renumbered in the order of first use) and all its triangles, for
+// formats with an object per body (3MF); named after its patch when it has one, else "body N"
+// (N from 1, in body order), as the page names them.
+struct BodyMesh {
+  std::string name;
+  std::vector<float> positions;
+  std::vector<uint32_t> indices;
+};
+std::vector<BodyMesh> bodyMeshes(const ModelMesh& mesh);
+
 // nu, nv: the grid cells per patch (at least 3 each: the grid's inner ring needs a row inside).
 // sceneSize as for measureBodies.
 ModelMesh watertightMesh(const std::vector<SolvedPatch>& solved, double sceneSize, int nu, int nv);

@@ -10,7 +10,7 @@ export NODE_PATH=/usr/share/nodejs  # emscripten's optimiser needs Debian's acor
 # comes as their dependencies); libtbb-dev: OCCT's CMake targets link libtbb.so by path, and
 # Debian's OCCT packages do not depend on it.
 APT_PACKAGES=(cmake g++ make emscripten libeigen3-dev doctest-dev nlohmann-json3-dev zlib1g-dev chromium nodejs
-              clang libclang-rt-14-dev libocct-data-exchange-dev libocct-modeling-algorithms-dev libtbb-dev)
+              clang libclang-rt-14-dev libocct-data-exchange-dev libocct-modeling-algorithms-dev libtbb-dev lib3mf-dev)
 
 log() { printf '\033[1m== %s\033[0m\n' "$*"; }
 

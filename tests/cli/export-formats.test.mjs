@@ -232,7 +232,7 @@ test('export: the format from --format, else the extension (any case), else obj;
   const out = join(dir, 'never.x');
   const bad = run('export', example('you2004-fig4a'), '-o', out, '--format', 'dxf');
   assert.equal(bad.status, 1);
-  assert.match(bad.stderr, /unknown --format 'dxf': expected obj, stl, ply, glb, step, stp, iges or igs/);
+  assert.match(bad.stderr, /unknown --format 'dxf': expected obj, stl, ply, glb, 3mf, step, stp, iges or igs/);
   assert.ok(!existsSync(out), 'refused before writing anything');
   const misplaced = run('sample', example('you2004-fig4a'), '--format', 'stl');
   assert.equal(misplaced.status, 1);

@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
 import Module from 'manifold-3d';
 
 const root = new URL('../../', import.meta.url).pathname;
@@ -176,4 +176,27 @@ test('a watertight mesh needs a row inside each patch: 2x2 refused by name, --pa
   assert.match(r.stderr, /a watertight mesh needs at least 3x3 cells a patch/);
   assert.equal(run('export', example('you2004-fig4a'), '-o', out, '--grid', '2x2', '--patches').status, 0);
   assert.match(run('check', example('you2004-fig4a'), '--patches').stderr, /--patches applies to export only/);
+});
+
+// lib3mf's own reader and manifold check (tests/mesh/read_3mf.cpp), beside the CLI.
+const read3mf = (file) => {
+  const r = spawnSync(join(dirname(cli), 'read_3mf'), [file], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  return JSON.parse(r.stdout).objects;
+};
+
+test('3MF (lib3mf): the aeroplane and the bottle one manifold, oriented object each; open or loose meshes are not', () => {
+  for (const id of ['you2004-fig8d', 'bottle-solid']) {
+    const file = join(dir, `${id}.3mf`);
+    assert.equal(run('export', example(id), '-o', file, '--grid', '16x16').status, 0);
+    const objects = read3mf(file);
+    const obj = readObj(exportFile(id, 'obj', 16));
+    assert.deepEqual(objects, [{ name: 'body 1', mesh: true, vertices: obj.positions.length / 3, triangles: obj.triangles.length / 3, manifold: true }]);
+  }
+  const loose = join(dir, 'loose.3mf');
+  assert.equal(run('export', example('bottle-solid'), '-o', loose, '--grid', '16x16', '--patches').status, 0);
+  assert.equal(read3mf(loose)[0].manifold, false, 'each patch its own vertices');
+  const open = join(dir, 'open.3mf');
+  assert.equal(run('export', example('you2004-fig4a'), '-o', open, '--grid', '16x16').status, 0);
+  assert.deepEqual(read3mf(open).map((o) => [o.name, o.manifold]), [['body 1', false]]);
 });

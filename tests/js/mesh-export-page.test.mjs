@@ -1,16 +1,16 @@
 // The page's mesh exports (web/export/mesh-export.js) from the wasm module's modelMesh, read
 // back by real libraries: the aeroplane's and the bottle's bodies, as the page writes them in
-// OBJ, STL, GLB (three's exporters) and 3MF (@jscadui/3mf-export, unzipped by fflate), are
-// accepted by manifold-3d with the CLI's mesh volume; the wasm mesh is the CLI's (same
+// OBJ, STL, GLB (three's exporters) and 3MF (@jscadui/3mf-export, unzipped by fflate; and
+// read by lib3mf, tests/mesh/read_3mf.cpp), are accepted by manifold-3d with the CLI's mesh volume; the wasm mesh is the CLI's (same
 // vertices, same triangles); an open model is refused by manifold; names with markup stay
 // text in 3MF's XML and on one line in OBJ.
 //   PDESURF_CLI=build/native/pdesurf PDESURF_BUILD_DIR=build node --test tests/js/mesh-export-page.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
 import { unzipSync, strFromU8 } from 'fflate';
 import Module from 'manifold-3d';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -119,6 +119,12 @@ for (const id of ['you2004-fig8d', 'bottle-solid']) {
       stl: readStl(await exportStl(model)),
       '3mf': read3mf(await export3mf(model, id)).objects[0],
     };
+    // lib3mf reads the page's package too and finds the body manifold and oriented.
+    const threeMf = join(dir, `${id}.3mf`);
+    writeFileSync(threeMf, await export3mf(model, id));
+    const lib3mf = spawnSync(join(dirname(cli), 'read_3mf'), [threeMf], { encoding: 'utf8' });
+    assert.equal(lib3mf.status, 0, lib3mf.stderr);
+    assert.deepEqual(JSON.parse(lib3mf.stdout).objects, [{ name: 'body 1', mesh: true, vertices: body.positions.length / 3, triangles: body.indices.length / 3, manifold: true }]);
     const [glb] = await readGlb(await exportGlb(model, new Map(), id));
     meshes.glb = glb;
     assert.equal(glb.primitives, model.parts.length, 'a primitive per patch');
