@@ -99,7 +99,7 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
   std::snprintf(line, sizeof line, "  largest gap closed: edges %.2g, vertices %.2g (the file states %.3g)\n", topology.edgeGap, topology.vertexSpread,
                 std::max({tolerance, topology.edgeGap, topology.vertexSpread}));
   out << line;
-  const std::string text = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info);
+  const std::string text = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info, &topology);
   // Beside the target, so the rename stays on one file system.
   const std::string temporary = o.output + ".part-" + std::to_string(getpid());
   {

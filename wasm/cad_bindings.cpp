@@ -112,22 +112,18 @@ val exportCad(const std::string& sceneJson, val options) {
       CadFileInfo info;
       info.title = scene.title;
       info.tolerance = tolerance;
-      // STEP: every join one shared edge, closed shells as solids (cad/brep_topology.hpp).
-      if (format == "step") {
-        const BrepTopology topology = buildTopology(surfaces, borderJoins(solved), tolerance);
-        r.set("text", writeStep(surfaces, info, &topology));
-        val shells = val::array();
-        for (const BrepShell& sh : topology.shells) {
-          val o = val::object();
-          o.set("faces", int(sh.faces.size()));
-          o.set("closed", sh.closed);
-          o.set("volume", sh.volume);
-          shells.call<void>("push", o);
-        }
-        r.set("shells", shells);
-      } else {
-        r.set("text", writeIges(surfaces, info));
+      // Every join one shared edge, closed shells as solids (cad/brep_topology.hpp).
+      const BrepTopology topology = buildTopology(surfaces, borderJoins(solved), tolerance);
+      r.set("text", format == "step" ? writeStep(surfaces, info, &topology) : writeIges(surfaces, info, &topology));
+      val shells = val::array();
+      for (const BrepShell& sh : topology.shells) {
+        val o = val::object();
+        o.set("faces", int(sh.faces.size()));
+        o.set("closed", sh.closed);
+        o.set("volume", sh.volume);
+        shells.call<void>("push", o);
       }
+      r.set("shells", shells);
     }
     return r;
   });
