@@ -51,14 +51,19 @@ val faceOf(const PatchFit& f) {
 }
 
 // options: {format: "step" | "iges" | "faces", tolerance: number (absolute; absent or 0: the
-// default, 1e-6 of the scene's diagonal), degree: 3 | 5}.
+// default, 1e-6 of the scene's diagonal), degree: 3 | 5, onProgress(done, total, patch): called
+// after each patch's fit}.
 val exportCad(const std::string& sceneJson, val options) {
   return guarded("try a larger tolerance", [&]() -> val {
     const bool isObject = !options.isUndefined() && !options.isNull() && options.typeOf().as<std::string>() == "object";
     std::string format = "faces";
     SceneFitOptions fit;
     if (isObject) {
-      const val f = options["format"], t = options["tolerance"], d = options["degree"];
+      const val f = options["format"], t = options["tolerance"], d = options["degree"], progress = options["onProgress"];
+      if (!progress.isUndefined()) {
+        if (progress.typeOf().as<std::string>() != "function") throw Error(ErrorCode::InvalidField, "onProgress: must be a function");
+        fit.progress = [progress](size_t done, size_t total, const std::string& patch) { progress(double(done), double(total), patch); };
+      }
       if (!f.isUndefined()) {
         if (f.typeOf().as<std::string>() != "string") throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\" or \"faces\"");
         format = f.as<std::string>();

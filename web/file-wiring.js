@@ -84,6 +84,13 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
       if (note) status.warn(`${line}; ${note}`);
       else status.info(line);
     } catch (err) {
+      if (err?.code === 'Cancelled') {
+        const msg = `${label} export cancelled`;
+        hooks.lastFile = { action, cancelled: true };
+        status.info(msg);
+        said(msg);
+        return;
+      }
       const msg = `cannot export ${label}: ${messageOf(err)}`;
       hooks.lastFile = { action, error: msg };
       status.error(msg);
@@ -93,7 +100,8 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
     }
   }
 
-  // format: step, iges or 3dm; toleranceText: the folder's field (blank: the default).
+  // format: step, iges or 3dm; toleranceText: the folder's field (blank: the default). The fit
+  // reports each patch done: the folder's bar follows, and its cancel button ends the export.
   function cadFile(format, toleranceText) {
     const label = CAD_LABELS[format];
     const said = (text, kind) => fileFolder.sayCad(text, kind);
@@ -102,7 +110,17 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
       const cad = await cadExport();
       const tolerance = cad.parseTolerance(toleranceText);
       said(`fitting ${label}…`);
-      const file = await cad.cadFile({ solver, sceneText: state.text(), format, tolerance, base: baseName() });
+      fileFolder.cadProgress(0);
+      const onProgress = (done, total, patch) => {
+        fileFolder.cadProgress(done / total);
+        said(`fitting ${label}: ${done} of ${total} patches (${patch})`);
+      };
+      let file;
+      try {
+        file = await cad.cadFile({ solver, sceneText: state.text(), format, tolerance, base: baseName(), onProgress });
+      } finally {
+        fileFolder.cadProgress(null);
+      }
       const summary = cad.fitSummary(format, file.fit);
       said(summary.text, summary.missed.length || summary.joinsOff ? 'warn' : null);
       const note = summary.missed.length ? `normals target not reached on ${summary.missed.join(', ')}`
@@ -142,6 +160,7 @@ export function createFileWiring({ panel, viewer, state, status, hooks, solver, 
     }),
     mesh: meshFile,
     cad: cadFile,
+    cancelCad: () => solver.cancelExport(),
     png: ({ scale, transparent }) => exportWith('png', async () => {
       const { scene } = viewer.sceneGraph();
       const { renderPng } = await pngExport();

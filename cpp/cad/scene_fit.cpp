@@ -42,6 +42,7 @@ std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const Sce
     }
     f.surface.name = sp.patch->name;
     out.push_back(std::move(f));
+    if (o.progress) o.progress(out.size(), solved.size(), sp.patch->name);
   }
   return out;
 }

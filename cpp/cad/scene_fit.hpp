@@ -1,6 +1,7 @@
 // Every patch of a solved scene as a B-spline surface for CAD, each with its certificate:
 // Bézier patches exactly (their net), the others by the certified fit (bspline_fit.hpp).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct PatchFit {
 struct SceneFitOptions {
   double tolerance = 0.0;  // absolute, scene units; 0: the default, 1e-6 of the scene's diagonal
   int degree = 5;
+  // Told after each patch: how many are fitted of how many, and the one just done (the page's
+  // progress bar; the fit of one patch is the unit of work).
+  std::function<void(size_t done, size_t total, const std::string& patch)> progress;
 };
 
 constexpr double kDefaultFitTolerance = 1e-6;  // of the scene's bounding-box diagonal

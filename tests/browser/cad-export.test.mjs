@@ -301,6 +301,40 @@ describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
     await phone.close();
   });
 
+  // The aeroplane's fit takes seconds: the bar follows the patches and cancel ends it, at
+  // 1280×800 and on a phone; nothing is written, and the page solves again after.
+  for (const [label, viewport] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 390, height: 844 }]]) {
+    it(`a long STEP export shows its progress and cancels (${label}, ${viewport.width}×${viewport.height})`, async () => {
+      const p = await h.open('/app/#example=you2004-fig8d', { viewport });
+      let saved = 0;
+      p.on('download', () => { saved++; });
+      assert.equal(await p.evaluate(() => window.__pdesurf.lastError), null);
+      if (viewport.width < 600) await p.locator('[data-action="panel"]').click();
+      await openFolder(p);
+      await p.locator(`${folderSel} [data-file="step"] button`).click();
+      const bar = `${folderSel} [data-file="cad-progress"]`;
+      await p.waitForFunction((s) => { const b = document.querySelector(`${s} progress`); return b && !b.closest('[hidden]') && b.value > 0; }, bar, { timeout: 60_000 });
+      const line = await p.locator(cadLine).textContent();
+      assert.match(line, /^fitting STEP: \d+ of 22 patches \(\S+\)$/);
+      await p.locator(bar).scrollIntoViewIfNeeded();
+      const box = await p.locator(bar).boundingBox();
+      assert.ok(box.x >= 0 && box.x + box.width <= viewport.width + 0.5, JSON.stringify(box));
+      await shoot(p, `cad-export-progress-${label}.png`);
+      await p.locator(`${folderSel} [data-file="cad-cancel"]`).click();
+      await p.waitForFunction((s) => document.querySelector(s).textContent === 'STEP export cancelled', cadLine);
+      assert.equal(await p.locator(bar).isVisible(), false, 'the bar stays after the cancel');
+      assert.deepEqual(await p.evaluate(() => window.__pdesurf.lastFile), { action: 'step', cancelled: true });
+      // The solver's worker was ended: the next solve starts a new one and succeeds.
+      const before = await p.evaluate(() => window.__pdesurf.solveCount);
+      await p.evaluate(() => { location.hash = '#example=you2004-fig4a'; });
+      const after = await solvedAfter(p, before);
+      assert.equal(after.lastError, null);
+      assert.equal(after.exampleId, 'you2004-fig4a');
+      assert.equal(saved, 0, 'a cancelled export wrote a file');
+      await p.close();
+    });
+  }
+
   it('logged no console error, page error, failed request or CSP violation', async () => {
     assert.deepEqual(await page.evaluate(() => window.__cspViolations), []);
     assert.deepEqual(h.problems, []);

@@ -36,10 +36,10 @@ export function parseTolerance(text) {
  * default); base: the file name's base (export/file-names.js).
  * Returns { data (text or bytes), name, type, fit: { title, tolerance, faces, ms } }.
  */
-export async function cadFile({ solver, sceneText, format, tolerance, base }) {
+export async function cadFile({ solver, sceneText, format, tolerance, base, onProgress }) {
   const f = CAD_FORMATS[format];
   if (!f) throw invalid(`no CAD format ${JSON.stringify(format)}`);
-  const fit = await solver.exportCad(sceneText, { format: format === '3dm' ? 'faces' : format, tolerance });
+  const fit = await solver.exportCad(sceneText, { format: format === '3dm' ? 'faces' : format, tolerance }, { onProgress });
   let data = fit.text;
   if (format === '3dm') {
     const { export3dm } = await import('../cad/export-3dm.js');

@@ -97,13 +97,14 @@ function modelMeshWith(Module, scene, { nu = 64, nv = 64 } = {}) {
 
 // Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text
 // (docs/wasm-api.md, docs/cad-export.md): { tolerance, faces: [...], text? }.
-function exportCadWith(Module, scene, { format = 'faces', tolerance, degree } = {}) {
+function exportCadWith(Module, scene, { format = 'faces', tolerance, degree, onProgress } = {}) {
   if (typeof Module.exportCad !== 'function') {
     throw new PdesurfError('Load', 'this solver module has no exportCad: rebuild the wasm module');
   }
   const options = { format };
   if (tolerance !== undefined) options.tolerance = tolerance;
   if (degree !== undefined) options.degree = degree;
+  if (typeof onProgress === 'function') options.onProgress = onProgress;
   let res;
   try {
     res = Module.exportCad(sceneText(scene), options);

@@ -9,6 +9,9 @@
 //   .restarts      how many solves were cancelled (for tests)
 //   .exportCad(scene (text), { format, tolerance }) -> promise of the module's exportCad
 //   .modelMesh(scene (text), { nu, nv }) -> promise of the module's modelMesh (one export at a time, as CAD's)
+//   .exportCad(…, …, { onProgress(done, total, patch) }): told after each patch's fit
+//   .cancelExport() -> true if an export was running or waiting: it fails with code 'Cancelled'
+//        (a running one by ending its worker; the next request starts a fresh one)
 //                  result ({ title, tolerance, faces, text? }, plus ms: the worker's time), or
 //                  an Error with the core's code. One at a time; it runs between solves, never
 //                  beside one (the worker is one thread): a solve asked for meanwhile waits
@@ -33,8 +36,8 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let worker = null;
   let running = null; // { id, job, started }
   let waiting = null; // { job, since }
-  let exporting = null; // { id, resolve, reject }: an export (CAD or mesh) in the worker
-  let exportWaiting = null; // { kind, scene, options, resolve, reject }: one asked for during a solve
+  let exporting = null; // { id, resolve, reject, onProgress }: an export (CAD or mesh) in the worker
+  let exportWaiting = null; // { kind, scene, options, resolve, reject, onProgress }: one asked for during a solve
   let nextId = 1;
   let lastMs = 0;
   let latestToken = null;
@@ -88,9 +91,9 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     }, BUSY_AFTER_MS);
   }
 
-  function dispatchExport({ kind, scene, options, resolve, reject }) {
+  function dispatchExport({ kind, scene, options, resolve, reject, onProgress }) {
     if (!worker) spawn();
-    exporting = { id: nextId++, resolve, reject };
+    exporting = { id: nextId++, resolve, reject, onProgress };
     worker.postMessage({ id: exporting.id, kind, scene, options });
   }
 
@@ -121,6 +124,10 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   }
 
   function finished(msg) {
+    if (msg.kind === 'progress') {
+      if (exporting && msg.id === exporting.id) exporting.onProgress?.(msg.done, msg.total, msg.patch);
+      return;
+    }
     if (msg.kind === 'exportCad' || msg.kind === 'modelMesh') {
       exported(msg);
       return;
@@ -208,17 +215,35 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     return () => {};
   };
   client.busy = () => running !== null;
-  const exportJob = (kind) => (scene, options) => new Promise((resolve, reject) => {
+  const exportJob = (kind) => (scene, options, { onProgress } = {}) => new Promise((resolve, reject) => {
     if (exporting || exportWaiting) {
       reject(new Error('another export is running'));
       return;
     }
-    const req = { kind, scene, options, resolve, reject };
+    const req = { kind, scene, options, resolve, reject, onProgress };
     if (running) exportWaiting = req; // after this solve (next())
     else dispatchExport(req);
   });
   client.exportCad = exportJob('exportCad');
   client.modelMesh = exportJob('modelMesh');
+  // The module cannot be interrupted inside a call: a running export ends with its worker.
+  client.cancelExport = () => {
+    const cancelled = Object.assign(new Error('cancelled'), { code: 'Cancelled' });
+    if (exportWaiting) {
+      exportWaiting.reject(cancelled);
+      exportWaiting = null;
+      return true;
+    }
+    if (!exporting) return false;
+    const { reject } = exporting;
+    exporting = null;
+    noneAhead();
+    worker.terminate();
+    worker = null;
+    reject(cancelled);
+    next();
+    return true;
+  };
   return client;
 }
 

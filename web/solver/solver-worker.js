@@ -9,7 +9,8 @@
 // A CAD export (the File folder's STEP, IGES, 3dm; docs/wasm-api.md, exportCad):
 //   in:  { id, kind: 'exportCad', scene, options: { format, tolerance } }
 //   out: { id, kind: 'exportCad', ok: true, result: { title, tolerance, faces, text? }, ms }
-//        with the faces' knots and poles transferred, or the same failure as a solve
+//        with the faces' knots and poles transferred, or the same failure as a solve; before
+//        it, after each patch's fit, { id, kind: 'progress', done, total, patch }
 // The model's watertight mesh (the File folder's OBJ, STL, GLB, 3MF; modelMesh):
 //   in:  { id, kind: 'modelMesh', scene, options: { nu, nv } }
 //   out: { id, kind: 'modelMesh', ok: true, result: { title, positions, normals, parts, bodies }, ms }
@@ -74,8 +75,10 @@ const run = {
     const result = solver.solve(scene, { ...options, topology: false });
     return [result, transferablesOf(result.patches)];
   },
-  exportCad: (solver, scene, { format, tolerance }) => {
-    const result = solver.exportCad(scene, { format, tolerance });
+  exportCad: (solver, scene, { format, tolerance }, id) => {
+    // Posted from inside the module's call: the page gets each message at once.
+    const onProgress = (done, total, patch) => self.postMessage({ id, kind: 'progress', done, total, patch });
+    const result = solver.exportCad(scene, { format, tolerance, onProgress });
     return [result, transferablesOf(result.faces)];
   },
   modelMesh: (solver, scene, { nu, nv }) => {
@@ -106,7 +109,7 @@ self.onmessage = async (event) => {
     }
     const solver = await ready;
     if (!Object.hasOwn(run, kind)) throw new Error(`unknown request ${JSON.stringify(kind)}`);
-    const [result, transfer] = run[kind](solver, scene, options);
+    const [result, transfer] = run[kind](solver, scene, options, id);
     self.postMessage({ id, kind, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (err) {
     const error = { code: String(err?.code || 'Internal'), message: String(err?.message || err) };

@@ -2,17 +2,19 @@
 // meshes (OBJ, STL, GLB, 3MF) or as certified B-spline faces for CAD (STEP, IGES, 3dm, at a tolerance
 // typed here; empty: the core's default) and the view (PNG at 1×, 2× or 4× the canvas,
 // optionally transparent). Names go through escapeHtml (lil-gui writes them as markup); the
-// CAD line under the buttons is written with textContent only. DOM hooks: data-file="open" |
+// CAD line under the buttons is written with textContent only; while a CAD export runs, a
+// progress bar (patches fitted of all) and a cancel button stand under it. DOM hooks: data-file="open" |
 // "json" | "obj" | "stl" | "glb" | "3mf" | "cad-tolerance" | "step" | "iges" | "3dm" | "cad-message" |
-// "png" | "png-scale" | "png-transparent".
+// "png" | "png-scale" | "png-transparent" | "cad-progress" | "cad-cancel".
 import { escapeHtml } from './html-text.js';
 
 export const PNG_SCALES = { '1×': 1, '2×': 2, '4×': 4 };
 
 /**
  * handlers: { open(), json(), mesh(format) with format 'obj' | 'stl' | 'glb' | '3mf', cad(format, toleranceText) with format
- * 'step' | 'iges' | '3dm', png({ scale, transparent }) }.
- * Returns { folder (its element), sayCad(text, kind) (the CAD line: kind null, 'warn' or 'error') }.
+ * 'step' | 'iges' | '3dm', cancelCad(), png({ scale, transparent }) }.
+ * Returns { folder (its element), sayCad(text, kind) (the CAD line: kind null, 'warn' or 'error'),
+ * cadProgress(fraction) (0..1 shows the bar and the cancel button; null hides them) }.
  */
 export function buildFileFolder(gui, handlers) {
   const folder = gui.addFolder('File');
@@ -47,6 +49,22 @@ export function buildFileFolder(gui, handlers) {
   message.setAttribute('role', 'status');
   message.hidden = true;
   folder.$children.append(message);
+  const progressRow = document.createElement('div');
+  progressRow.className = 'cad-progress';
+  progressRow.dataset.file = 'cad-progress';
+  progressRow.hidden = true;
+  const bar = document.createElement('progress');
+  bar.max = 1;
+  bar.value = 0;
+  bar.setAttribute('aria-label', 'CAD export progress');
+  const cancel = document.createElement('button');
+  cancel.type = 'button';
+  cancel.dataset.file = 'cad-cancel';
+  cancel.textContent = 'cancel';
+  cancel.title = 'stop this CAD export (the solver restarts; nothing is written)';
+  cancel.addEventListener('click', () => handlers.cancelCad());
+  progressRow.append(bar, cancel);
+  folder.$children.append(progressRow);
   const labels = Object.fromEntries(Object.entries(PNG_SCALES).map(([k, v]) => [escapeHtml(k), v]));
   folder.add(png, 'scale', labels).name(escapeHtml('PNG size')).domElement.dataset.file = 'png-scale';
   folder.add(png, 'transparent').name(escapeHtml('PNG transparent')).domElement.dataset.file = 'png-transparent';
@@ -59,6 +77,10 @@ export function buildFileFolder(gui, handlers) {
       message.hidden = !text;
       message.classList.toggle('warn', kind === 'warn');
       message.classList.toggle('error', kind === 'error');
+    },
+    cadProgress(fraction) {
+      progressRow.hidden = fraction === null;
+      if (fraction !== null) bar.value = Math.min(1, Math.max(0, fraction));
     },
   };
 }
