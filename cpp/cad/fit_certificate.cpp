@@ -104,9 +104,13 @@ Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridP
   out.cellNormalDeg.resize(mu - 1, mv - 1);
   out.cellSampled.resize(mu - 1, mv - 1);
   out.uDominant.resize(mu - 1, mv - 1);
-  for (Eigen::Index i = 0; i + 1 < mu; ++i)
-    for (Eigen::Index j = 0; j + 1 < mv; ++j) {
-      const double h2 = std::pow(g.u[size_t(i) + 1] - g.u[size_t(i)], 2) / 8, k2 = std::pow(g.v[size_t(j) + 1] - g.v[size_t(j)], 2) / 8;
+  // Column-major matrices: i runs inside (contiguous); the cells' squared half-widths once.
+  std::vector<double> h2(size_t(std::max<Eigen::Index>(mu - 1, 0))), k2(size_t(std::max<Eigen::Index>(mv - 1, 0)));
+  for (Eigen::Index i = 0; i + 1 < mu; ++i) h2[size_t(i)] = (g.u[size_t(i) + 1] - g.u[size_t(i)]) * (g.u[size_t(i) + 1] - g.u[size_t(i)]) / 8;
+  for (Eigen::Index j = 0; j + 1 < mv; ++j) k2[size_t(j)] = (g.v[size_t(j) + 1] - g.v[size_t(j)]) * (g.v[size_t(j) + 1] - g.v[size_t(j)]) / 8;
+  for (Eigen::Index j = 0; j + 1 < mv; ++j)
+    for (Eigen::Index i = 0; i + 1 < mu; ++i) {
+      const double h = h2[size_t(i)], k = k2[size_t(j)];
       const int su = g.uSpan[size_t(i)], sv = g.vSpan[size_t(j)];
       double sum2 = 0.0, uPart = 0.0, vPart = 0.0;
       auto corners = [&](const Eigen::MatrixXd& m) { return std::max(std::max(m(i, j), m(i + 1, j)), std::max(m(i, j + 1), m(i + 1, j + 1))); };
@@ -115,12 +119,12 @@ Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridP
         const double a22 = bs[1][size_t(c)](su, sv) + bb[1][size_t(c)](su, sv);
         const double a04 = bs[2][size_t(c)](su, sv) + bb[2][size_t(c)](su, sv);
         // One level down: e_uu and e_vv over the cell, from their corners and e's fourth derivatives.
-        const double muu = corners(e[3][size_t(c)]) + h2 * a40 + k2 * a22;
-        const double mvv = corners(e[4][size_t(c)]) + h2 * a22 + k2 * a04;
-        const double bound = corners(e[0][size_t(c)]) + h2 * muu + k2 * mvv;
+        const double muu = corners(e[3][size_t(c)]) + h * a40 + k * a22;
+        const double mvv = corners(e[4][size_t(c)]) + h * a22 + k * a04;
+        const double bound = corners(e[0][size_t(c)]) + h * muu + k * mvv;
         sum2 += bound * bound;
-        uPart += h2 * muu;
-        vPart += k2 * mvv;
+        uPart += h * muu;
+        vPart += k * mvv;
       }
       out.cell(i, j) = std::sqrt(sum2) * (1 + 1e-12);
       out.cellSampled(i, j) = corners(pointError);

@@ -206,27 +206,27 @@ std::string writeStep(const std::vector<BSplineSurface>& faces, const CadFileInf
 
   // Each connected set of faces is a shell: closed, the boundary of a solid; else open.
   const std::vector<int> faceIds = writeFaces(d, faces, t);
-  std::vector<int> shells;
-  bool allClosed = !t.shells.empty();
+  std::vector<int> solids, openShells;
   for (const BrepShell& sh : t.shells) {
     std::vector<int> members;
     for (int f : sh.faces) members.push_back(faceIds[size_t(f)]);
-    shells.push_back(d.add(std::string(sh.closed ? "CLOSED_SHELL" : "OPEN_SHELL") + "(''," + refs(members) + ")"));
-    allClosed = allClosed && sh.closed;
+    const int shell = d.add(std::string(sh.closed ? "CLOSED_SHELL" : "OPEN_SHELL") + "(''," + refs(members) + ")");
+    if (sh.closed) solids.push_back(d.add("MANIFOLD_SOLID_BREP(" + title + "," + ref(shell) + ")"));
+    else openShells.push_back(shell);
   }
   const int origin = d.add("AXIS2_PLACEMENT_3D(''," + ref(d.add("CARTESIAN_POINT('',(0.,0.,0.))")) + "," +
                            ref(d.add("DIRECTION('',(0.,0.,1.))")) + "," + ref(d.add("DIRECTION('',(1.,0.,0.))")) + ")");
-  if (allClosed) {
-    // Every body closed: solids (several bodies stay several).
-    std::vector<int> items;
-    for (int shell : shells) items.push_back(d.add("MANIFOLD_SOLID_BREP(" + title + "," + ref(shell) + ")"));
-    items.push_back(origin);
-    d.set(representation, "ADVANCED_BREP_SHAPE_REPRESENTATION(" + title + "," + refs(items) + "," + ref(geometricContext) + ")");
-  } else {
-    const int model = d.add("SHELL_BASED_SURFACE_MODEL(''," + refs(shells) + ")");
-    d.set(representation, "MANIFOLD_SURFACE_SHAPE_REPRESENTATION(" + title + ",(" + ref(origin) + "," + ref(model) + ")," +
-                              ref(geometricContext) + ")");
-  }
+  std::vector<int> items = solids;
+  if (!openShells.empty()) items.push_back(d.add("SHELL_BASED_SURFACE_MODEL(''," + refs(openShells) + ")"));
+  items.push_back(origin);
+  // Every body closed: an advanced B-rep of solids (several bodies stay several); every body
+  // open: a manifold surface model; both: a plain shape representation holds the solids and
+  // the surface model side by side (the advanced and surface representations each admit only
+  // their own kind).
+  const char* representationType = openShells.empty() ? "ADVANCED_BREP_SHAPE_REPRESENTATION"
+                                   : solids.empty()   ? "MANIFOLD_SURFACE_SHAPE_REPRESENTATION"
+                                                      : "SHAPE_REPRESENTATION";
+  d.set(representation, std::string(representationType) + "(" + title + "," + refs(items) + "," + ref(geometricContext) + ")");
 
   std::string out = "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('pdesurf B-spline surfaces'),'2;1');\n";
   out += "FILE_NAME(" + title + ",'" + stamp + "',(''),(''),'pdesurf','pdesurf','');\n";

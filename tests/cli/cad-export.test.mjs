@@ -33,9 +33,9 @@ function runAsync(cmd, args) {
 }
 
 // The core's own surface at grid points, per patch: (u, v, x, y, z) from `pdesurf sample`.
-function samples(id, patches) {
+function samples(id, patches, scenePath = example(id)) {
   return patches.map((name) => {
-    const r = spawnSync(cli, ['sample', example(id), '--patch', name, '--grid', GRID], { encoding: 'utf8' });
+    const r = spawnSync(cli, ['sample', scenePath, '--patch', name, '--grid', GRID], { encoding: 'utf8' });
     assert.equal(r.status, 0, r.stderr);
     const rows = r.stdout.trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
     return { name, samples: rows };
@@ -59,22 +59,20 @@ function parseExport(stdout) {
 }
 
 // What Open CASCADE must find in a STEP or IGES file, from what pdesurf says it wrote: the free
-// edges (the model's open borders), no edge on more than two faces, every closed shell closed,
-// and solids: in STEP when every shell is closed (a surface model holds no solid), in IGES one
-// per closed shell (each its own 186 root); when all are closed, their volume is pdesurf's.
-function topologyExpectation(topology, ext) {
+// edges (the model's open borders), no edge on more than two faces, every closed shell closed
+// and a solid; when all are closed, their volume is pdesurf's.
+function topologyExpectation(topology) {
   const closed = topology.shells.filter((s) => s.closed);
   const allClosed = closed.length === topology.shells.length;
-  const solids = ext === 'step' && !allClosed ? 0 : closed.length;
-  const out = { freeEdges: topology.free, edgesOnMoreThanTwoFaces: 0, closedShells: closed.length, solids };
+  const out = { freeEdges: topology.free, edgesOnMoreThanTwoFaces: 0, closedShells: closed.length, solids: closed.length };
   if (allClosed) out.volume = closed.reduce((a, s) => a + s.volume, 0);
   return out;
 }
 
 // The joins `pdesurf check` certifies between the surfaces: the same ones are measured between
 // the written faces, each within both faces' deviations and, G1 and up, normals within 0.01°.
-function checkFittedJoins(id, joins) {
-  const checked = spawnSync(cli, ['check', example(id), '--json', '--grid', '4x4'], { encoding: 'utf8' });
+function checkFittedJoins(id, joins, scenePath = example(id)) {
+  const checked = spawnSync(cli, ['check', scenePath, '--json', '--grid', '4x4'], { encoding: 'utf8' });
   const expected = JSON.parse(checked.stdout).joins.length;
   assert.equal(joins.length, expected, `${id}: ${joins.length} joins of the faces, ${expected} of the surfaces`);
   for (const j of joins) {
@@ -84,18 +82,18 @@ function checkFittedJoins(id, joins) {
   }
 }
 
-async function exportAndReadBack(id, ext) {
+async function exportAndReadBack(id, ext, scenePath = example(id)) {
   const file = join(dir, `${id}.${ext}`);
-  const r = await runAsync(cli, ['export', example(id), '-o', file]);
+  const r = await runAsync(cli, ['export', scenePath, '-o', file]);
   assert.equal(r.status, 0, `${id}.${ext}: ${r.stderr}`);
   const { tolerance, patches, joins, topology } = parseExport(r.stdout);
   for (const p of patches) assert.ok(p.deviation <= tolerance, `${id} ${p.name}: ${p.deviation} > ${tolerance}`);
-  checkFittedJoins(id, joins);
+  checkFittedJoins(id, joins, scenePath);
   assert.ok(topology, `${id}: no topology line`);
   assert.deepEqual(topology.unshared, [], `${id}: every join is a shared edge`);
   const expect = join(dir, `${id}.${ext}.expect.json`);
-  const wanted = { tolerance, faces: samples(id, patches.map((p) => p.name)) };
-  wanted.topology = topologyExpectation(topology, ext);
+  const wanted = { tolerance, faces: samples(id, patches.map((p) => p.name), scenePath) };
+  wanted.topology = topologyExpectation(topology);
   writeFileSync(expect, JSON.stringify(wanted));
   const back = await runAsync(readback, [file, expect]);
   const report = JSON.parse(back.stdout || '{}');
@@ -149,6 +147,14 @@ test(`every example (${chosen.length}) exported as STEP and IGES reads back in O
   };
   await Promise.all([worker(), worker()]);
   assert.deepEqual(failures, []);
+});
+
+test('a closed ball beside an open tube: one solid and one open shell in the same STEP and IGES file', async () => {
+  const scene = join(root, 'tests/fixtures/models/ball-and-tube.json');
+  for (const ext of ['step', 'igs']) {
+    const report = await exportAndReadBack('ball-and-tube', ext, scene);
+    assert.deepEqual([report.solids, report.shells, report.closedShells, report.freeEdges], [1, 2, 1, 2], ext);
+  }
 });
 
 test('a fit made worse than the tolerance fails the same read-back', async () => {

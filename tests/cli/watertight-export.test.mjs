@@ -16,6 +16,9 @@ const cli = process.env.PDESURF_CLI ?? join(root, 'build/native/pdesurf');
 const example = (id) => join(root, 'examples', `${id}.json`);
 const run = (...args) => spawnSync(cli, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
 const dir = mkdtempSync(join(tmpdir(), 'pdesurf-watertight-'));
+// Under AddressSanitizer (the sanitize row) the aeroplane's solve is ten times slower: the
+// bottle and a few small examples there; natively everything.
+const sanitized = process.env.PDESURF_CLI_SANITIZED === '1';
 const manifold = await Module();
 manifold.setup();
 
@@ -122,7 +125,7 @@ function bodiesOf(id) {
   return JSON.parse(r.stdout).bodies;
 }
 
-for (const id of ['you2004-fig8d', 'bottle-solid']) {
+for (const id of sanitized ? ['bottle-solid'] : ['you2004-fig8d', 'bottle-solid']) {
   test(`${id}: every mesh format one closed manifold of genus 0, its volume the exact one (Richardson 32/64) within 1e-4`, () => {
     const [body] = bodiesOf(id);
     assert.ok(body.closed);
@@ -148,15 +151,16 @@ for (const id of ['you2004-fig8d', 'bottle-solid']) {
   });
 }
 
-test('the loose --patches mesh of the aeroplane is refused by manifold-3d (the check can fail)', () => {
-  const m = toManifold(readObj(exportFile('you2004-fig8d', 'obj', 16, '--patches')));
+test('the loose --patches mesh of a closed model is refused by manifold-3d (the check can fail)', () => {
+  const m = toManifold(readObj(exportFile(sanitized ? 'bottle-solid' : 'you2004-fig8d', 'obj', 16, '--patches')));
   assert.ok(!(m instanceof manifold.Manifold), 'each patch its own vertices: not one closed mesh');
 });
 
 test('every example: manifold and one-way along every join; closed exactly when check says every body is', () => {
   const index = JSON.parse(readFileSync(join(root, 'examples/index.json'), 'utf8'));
+  const ids = sanitized ? ['you2004-fig4a', 'wu2015-fig1a', 'you2004-fig8c', 'bottle-solid', 'zhang-vase-fig1a'] : index.examples.map((e) => e.id);
   let closedModels = 0;
-  for (const { id } of index.examples) {
+  for (const id of ids) {
     const mesh = readObj(exportFile(id, 'obj', 8));
     const counts = edgeCounts(mesh);
     assert.equal(counts.turned, 0, `${id}: two faces turned apart across an edge`);
@@ -166,7 +170,7 @@ test('every example: manifold and one-way along every join; closed exactly when 
     assert.equal(toManifold(mesh) instanceof manifold.Manifold, allClosed, `${id}: manifold-3d's verdict`);
     closedModels += allClosed;
   }
-  assert.ok(closedModels >= 2);
+  assert.ok(closedModels >= (sanitized ? 1 : 2));
 });
 
 test('a watertight mesh needs a row inside each patch: 2x2 refused by name, --patches takes it', () => {
@@ -180,13 +184,13 @@ test('a watertight mesh needs a row inside each patch: 2x2 refused by name, --pa
 
 // lib3mf's own reader and manifold check (tests/mesh/read_3mf.cpp), beside the CLI.
 const read3mf = (file) => {
-  const r = spawnSync(join(dirname(cli), 'read_3mf'), [file], { encoding: 'utf8' });
+  const r = spawnSync(process.env.PDESURF_READ_3MF ?? join(dirname(cli), 'read_3mf'), [file], { encoding: 'utf8' });
   assert.equal(r.status, 0, r.stderr);
   return JSON.parse(r.stdout).objects;
 };
 
 test('3MF (lib3mf): the aeroplane and the bottle one manifold, oriented object each; open or loose meshes are not', () => {
-  for (const id of ['you2004-fig8d', 'bottle-solid']) {
+  for (const id of sanitized ? ['bottle-solid'] : ['you2004-fig8d', 'bottle-solid']) {
     const file = join(dir, `${id}.3mf`);
     assert.equal(run('export', example(id), '-o', file, '--grid', '16x16').status, 0);
     const objects = read3mf(file);
