@@ -18,6 +18,8 @@ namespace {
 
 // Spans on either side halved with one whose border normal misses its target.
 constexpr int kNormalSpread = 2;
+// Certificate cells per span (a span starts with 4) before the span itself is halved.
+constexpr int kMaxCellsPerSpan = 64;
 
 // Grid values: each span cut into its own number of cells; uSpan[i] names the cell's span.
 void makeGrid(const std::vector<double>& breaks, const std::vector<int>& cuts, std::vector<double>* t, std::vector<int>* spanOf) {
@@ -343,10 +345,20 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
           finerV[size_t(sv)] = true;
         }
       }
+    // Finer cells shrink the bound's h² terms, but S's fourth-derivative bound stays the whole
+    // span's: past kMaxCellsPerSpan a span is halved instead, so the bound becomes the halves'
+    // own (a fill's boundary layer bounded over its first span had the cells of a span near its
+    // end refined to 1024 and the certificate points run out 14 % short of the tolerance).
     for (int i = 0; i < nsu; ++i)
-      if (finerU[size_t(i)] && !markU[size_t(i)]) ucut[size_t(i)] *= 2;
+      if (finerU[size_t(i)] && !markU[size_t(i)]) {
+        if (ucut[size_t(i)] >= kMaxCellsPerSpan) markU[size_t(i)] = true;
+        else ucut[size_t(i)] *= 2;
+      }
     for (int j = 0; j < nsv; ++j)
-      if (finerV[size_t(j)] && !markV[size_t(j)]) vcut[size_t(j)] *= 2;
+      if (finerV[size_t(j)] && !markV[size_t(j)]) {
+        if (vcut[size_t(j)] >= kMaxCellsPerSpan) markV[size_t(j)] = true;
+        else vcut[size_t(j)] *= 2;
+      }
     split(ub, ucut, uCrease, markU);
     split(vb, vcut, vCrease, markV);
   }

@@ -157,6 +157,50 @@ test('a closed ball beside an open tube: one solid and one open shell in the sam
   }
 });
 
+// Random closed models from the space a user reaches: a tube of random radii (a cone frustum,
+// or an elliptic or wavy section), height and placement, its rings capped by fills of 1 to 4
+// sides (a ring split into that many ranges) at random heights, G1 or G2: every one one solid
+// in STEP and IGES, no free edge, Open CASCADE's volume pdesurf's.
+test('random capped tubes: one solid each in STEP and IGES, the volume pdesurf states', async () => {
+  let seed = 3608;
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const n = sanitized ? 1 : 4;
+  for (let k = 0; k < n; ++k) {
+    const r0 = 0.6 + 0.6 * random(), r1 = 0.6 + 0.6 * random(), h = 1 + 2 * random(), e = 0.7 + 0.6 * random(), w = 0.15 * random();
+    const section = `(1 + ${w}*sin(3*v))`;
+    const sides = (ring) => {
+      const count = 1 + Math.floor(4 * random());
+      if (count === 1) return [{ patch: 'tube', at: ring }];
+      // Ranges inside the ring's [0, 2π], the first from 0 (the scene refuses a range through the seam).
+      const cuts = [...Array(count).keys()].map((i) => (i === 0 ? 0 : (2 * Math.PI * (i + 0.6 * random() - 0.3)) / count));
+      return cuts.map((c, i) => ({ patch: 'tube', at: ring, range: [c, i + 1 < count ? cuts[i + 1] : 2 * Math.PI] }));
+    };
+    const continuity = random() < 0.5 ? 'tangency' : 'curvature';
+    const scene = {
+      format: 'pdesurf-scene', version: 4, title: `random capped tube ${k}`,
+      patches: [
+        { name: 'tube', kind: 'surface', t_range: [0, 1], v_range: [0, '2*pi'],
+          x: `(${r0} + ${r1 - r0}*t)*${section}*cos(v)`, y: `${e}*(${r0} + ${r1 - r0}*t)*${section}*sin(v)`, z: `${h}*t`,
+          placement: { translate: [random() * 4 - 2, random() * 4 - 2, random() * 4 - 2], rotate: [360 * random(), 360 * random(), 360 * random()], scale: 0.5 + random() } },
+        { name: 'bottom', kind: 'fill', borders: sides('t0'), height: 0.4 * random(), continuity },
+        { name: 'top', kind: 'fill', borders: sides('t1'), height: 0.4 * random(), continuity },
+      ],
+    };
+    const file = join(dir, `random-tube-${k}.json`);
+    writeFileSync(file, JSON.stringify(scene));
+    const checked = spawnSync(cli, ['check', file, '--json', '--grid', '8x8'], { encoding: 'utf8' });
+    assert.ok(checked.stdout, `${checked.stderr} ${JSON.stringify(scene)}`);
+    const bodies = JSON.parse(checked.stdout).bodies;
+    assert.equal(bodies.length, 1, JSON.stringify(scene));
+    assert.ok(bodies[0].closed, JSON.stringify(scene));
+    for (const ext of ['step', 'igs']) {
+      const report = await exportAndReadBack(`random-tube-${k}`, ext, file);
+      assert.deepEqual([report.solids, report.closedShells, report.freeEdges], [1, 1, 0], `${ext}: ${JSON.stringify(scene)}`);
+      assert.ok(Math.abs(report.volume - bodies[0].volume) <= 1e-4 * bodies[0].volume, `${ext}: OCCT ${report.volume}, check ${bodies[0].volume}`);
+    }
+  }
+});
+
 test('a fit made worse than the tolerance fails the same read-back', async () => {
   const file = join(dir, 'loose.step');
   const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', file, '--tol', '1e-2', '--degree', '3'], { encoding: 'utf8' });
