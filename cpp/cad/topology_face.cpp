@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 
+#include "cad/grid_partials.hpp"
+
 namespace pdesurf {
 
 namespace {
@@ -26,6 +28,17 @@ double integrate(const TopologyFace& face, F f) {
     }
   }
   return sum;
+}
+
+// Gauss-Legendre nodes (4 a cell) and weights over the cells between sorted breaks.
+void gaussNodes(const std::vector<double>& breaks, std::vector<double>* x, std::vector<double>* w) {
+  static const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  static const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  for (size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const double a = breaks[i], b = breaks[i + 1];
+    if (!(b > a)) continue;
+    for (int p = 0; p < 4; ++p) x->push_back((a + b) / 2 + (b - a) / 2 * gx[p]), w->push_back((b - a) / 2 * gw[p]);
+  }
 }
 
 std::vector<double> distinct(const std::vector<double>& knots) {
@@ -56,6 +69,21 @@ TopologyFace topologyFace(const BSplineSurface& s) {
   f.eval = [&s](double u, double v, int du, int dv) { return evaluate(s, u, v, du, dv); };
   f.spline = &s;
   f.uCells = distinct(s.knotsU), f.vCells = distinct(s.knotsV);
+  // Area and volume part at once, the spline tabulated at the Gauss nodes of its knot spans
+  // (a tensor grid: the basis found once a node, not six times a point).
+  std::vector<double> un, uw, vn, vw;
+  gaussNodes(f.uCells, &un, &uw);
+  gaussNodes(f.vCells, &vn, &vw);
+  const GridPartials t = tabulateSpline(s, un, vn);
+  double area = 0, volume = 0;
+  for (size_t j = 0; j < vn.size(); ++j)
+    for (size_t i = 0; i < un.size(); ++i) {
+      const auto at = [&](int k) { return Eigen::Vector3d(t[size_t(k)][0](Eigen::Index(i), Eigen::Index(j)), t[size_t(k)][1](Eigen::Index(i), Eigen::Index(j)), t[size_t(k)][2](Eigen::Index(i), Eigen::Index(j))); };
+      const Eigen::Vector3d n = at(1).cross(at(2));
+      area += uw[i] * vw[j] * n.norm();
+      volume += uw[i] * vw[j] * at(0).dot(n);
+    }
+  f.area = area, f.signedVolume = volume / 3;
   return f;
 }
 
