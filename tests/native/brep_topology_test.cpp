@@ -265,14 +265,7 @@ TEST_CASE("random holes and random capped tubes: the topology the model implies,
     CHECK(bodies[0].patches.size() == size_t(n + 1));
     // A cone frustum of random radii and height capped by two fills: one closed body.
     const double r0 = 0.6 + 0.6 * unit(rng), r1 = 0.6 + 0.6 * unit(rng), h = 1 + 2 * unit(rng);
-    char x[200], y[200];
-    std::snprintf(x, sizeof x, "(%.17g + %.17g*t)*cos(v)", r0, r1 - r0);
-    std::snprintf(y, sizeof y, "(%.17g + %.17g*t)*sin(v)", r0, r1 - r0);
-    const json tube = {{"format", "pdesurf-scene"}, {"version", 4},
-                       {"patches", json::array({{{"name", "tube"}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, "2*pi"}},
-                                                 {"x", x}, {"y", y}, {"z", std::to_string(h) + "*t"}},
-                                                {{"name", "bottom"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t0"}}}}, {"height", 0.3}},
-                                                {{"name", "top"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t1"}}}}, {"height", 0.3}}})}};
+    const json tube = cappedTube(r0, r1, h);
     const Scene capped = parseScene(tube.dump());
     const auto cs = solveScene(capped);
     const std::vector<Body> cb = measureBodies(cs, sceneSizeOf(cs));

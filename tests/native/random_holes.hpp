@@ -50,4 +50,16 @@ inline nlohmann::json randomHole(int n, const Sheet& sheet, std::mt19937& rng, d
   return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}};
 }
 
+// A cone frustum of radii r0, r1 and height h (t from 0 to 1, closed in v) capped by a fill on
+// each ring: one closed body.
+inline nlohmann::json cappedTube(double r0, double r1, double h) {
+  const std::string r = "(" + exactNumber(r0) + " + " + exactNumber(r1 - r0) + "*t)";
+  using nlohmann::json;
+  return {{"format", "pdesurf-scene"}, {"version", 4},
+          {"patches", json::array({{{"name", "tube"}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, "2*pi"}},
+                                    {"x", r + "*cos(v)"}, {"y", r + "*sin(v)"}, {"z", exactNumber(h) + "*t"}},
+                                   {{"name", "bottom"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t0"}}}}, {"height", 0.3}},
+                                   {{"name", "top"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t1"}}}}, {"height", 0.3}}})}};
+}
+
 }  // namespace pdesurf::testing

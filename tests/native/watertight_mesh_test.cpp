@@ -148,14 +148,7 @@ TEST_CASE("random holes and capped frusta: open borders free, closed bodies wate
     // Its free edges: each strip's outer border and two ends (3 n borders), 8 cells each.
     CHECK(inspect(watertightMesh(hole.solved, hole.size, 8, 8), 0).freeEdges == size_t(3 * n * 8));
     const double r0 = 0.6 + 0.6 * unit(rng), r1 = 0.6 + 0.6 * unit(rng), h = 1 + 2 * unit(rng);
-    char x[200], y[200];
-    std::snprintf(x, sizeof x, "(%.17g + %.17g*t)*cos(v)", r0, r1 - r0);
-    std::snprintf(y, sizeof y, "(%.17g + %.17g*t)*sin(v)", r0, r1 - r0);
-    const json tube = {{"format", "pdesurf-scene"}, {"version", 4},
-                       {"patches", json::array({{{"name", "tube"}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, "2*pi"}},
-                                                 {"x", x}, {"y", y}, {"z", std::to_string(h) + "*t"}},
-                                                {{"name", "bottom"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t0"}}}}, {"height", 0.3}},
-                                                {{"name", "top"}, {"kind", "fill"}, {"borders", {{{"patch", "tube"}, {"at", "t1"}}}}, {"height", 0.3}}})}};
+    const json tube = cappedTube(r0, r1, h);
     checkModel(solvedFrom(tube.dump()), 32, 1e-4);
     // The mutations: a face left unshared (its own copies of its vertices) opens the mesh;
     // a cap on a copy of the tube lifted by 1e-3 leaves the tube's top ring free.

@@ -78,44 +78,39 @@ export async function loadSolver(opts = {}) {
 // positions, normals (Float32Array, shared by the patches), parts: [{ name, body, indices }],
 // bodies: [{ closed, area, volume?, freeEdges }] }.
 function modelMeshWith(Module, scene, { nu = 64, nv = 64 } = {}) {
-  if (typeof Module.modelMesh !== 'function') {
-    throw new PdesurfError('Load', 'this solver module has no modelMesh: rebuild the wasm module');
+  const res = callModule(Module, 'modelMesh', [sceneText(scene), nu, nv], 'mesh');
+  return { title: res.title, positions: res.positions, normals: res.normals, parts: Array.from(res.parts), bodies: Array.from(res.bodies) };
+}
+
+// Module[name](...args), whose result is { ok: true, … } or { ok: false, error }, as that result
+// or a PdesurfError: a module without the function is Load, a throw or no result Internal,
+// a failure its own code (`what` names the call in a failure without a message).
+function callModule(Module, name, args, what) {
+  if (typeof Module[name] !== 'function') {
+    throw new PdesurfError('Load', `this solver module has no ${name}: rebuild the wasm module`);
   }
   let res;
   try {
-    res = Module.modelMesh(sceneText(scene), nu, nv);
+    res = Module[name](...args);
   } catch (err) {
-    throw new PdesurfError('Internal', err instanceof Error ? err.message : `modelMesh threw ${String(err)}`);
+    throw new PdesurfError('Internal', err instanceof Error ? err.message : `${name} threw ${String(err)}`);
   }
-  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', 'modelMesh returned no result');
+  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', `${name} returned no result`);
   if (!res.ok) {
     const e = res.error || {};
-    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown mesh error'));
+    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || `unknown ${what} error`));
   }
-  return { title: res.title, positions: res.positions, normals: res.normals, parts: Array.from(res.parts), bodies: Array.from(res.bodies) };
+  return res;
 }
 
 // Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text
 // (docs/wasm-api.md, docs/cad-export.md): { tolerance, faces: [...], text? }.
 function exportCadWith(Module, scene, { format = 'faces', tolerance, degree, onProgress } = {}) {
-  if (typeof Module.exportCad !== 'function') {
-    throw new PdesurfError('Load', 'this solver module has no exportCad: rebuild the wasm module');
-  }
   const options = { format };
   if (tolerance !== undefined) options.tolerance = tolerance;
   if (degree !== undefined) options.degree = degree;
   if (typeof onProgress === 'function') options.onProgress = onProgress;
-  let res;
-  try {
-    res = Module.exportCad(sceneText(scene), options);
-  } catch (err) {
-    throw new PdesurfError('Internal', err instanceof Error ? err.message : `exportCad threw ${String(err)}`);
-  }
-  if (!res || typeof res !== 'object') throw new PdesurfError('Internal', 'exportCad returned no result');
-  if (!res.ok) {
-    const e = res.error || {};
-    throw new PdesurfError(String(e.code || 'Internal'), String(e.message || 'unknown export error'));
-  }
+  const res = callModule(Module, 'exportCad', [sceneText(scene), options], 'export');
   const out = { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), joins: Array.from(res.joins || []), text: res.text };
   // STEP: the shells the file holds ({ faces, closed, volume }; a closed one is a solid).
   if (res.shells) out.shells = Array.from(res.shells);
