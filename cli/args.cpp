@@ -18,7 +18,8 @@ const char* kUsage =
     "      FILE's extension, else obj. Patches share\n"
     "      their vertices along every join (watertight); --patches: each its own grid, with (u, v)\n"
     "  pdesurf export SCENE.json -o FILE.step|.igs [--tol T] [--degree 3|5]  every patch as a B-spline face within the\n"
-    "      certified deviation T (scene units; default 1e-6 of the scene's diagonal); STEP AP214 or IGES 5.3\n"
+    "      certified deviation T (scene units; default 1e-6 of the scene's diagonal); STEP AP214 or IGES 5.3;\n"
+    "      [--jobs N]: patches fitted on N threads (default: the machine's, at most 8; the same file)\n"
     "  pdesurf compare SCENE.json [--patch NAME] [--grid 100x100] [--json]    every applicable method:\n"
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
     "  pdesurf check SCENE.json [--json] [--grid NxN]                         join certificate (G0/G1/G2, folds) and\n"
@@ -76,6 +77,12 @@ Options parseArgs(const std::vector<std::string>& args) {
       const std::string& d = value();
       if (d != "3" && d != "5") throw std::runtime_error("--degree expects 3 or 5, got '" + d.substr(0, 40) + "'");
       o.degree = d[0] - '0';
+    } else if (a == "--jobs") {
+      const std::string& j = value();
+      char* end = nullptr;
+      const long n = std::strtol(j.c_str(), &end, 10);
+      if (j.empty() || *end != '\0' || n < 1 || n > 64) throw std::runtime_error("--jobs expects a whole number from 1 to 64, got '" + j.substr(0, 40) + "'");
+      o.jobs = int(n);
     }
     else if (!a.empty() && a[0] == '-' && o.command != "decode-link") throw std::runtime_error("unknown option '" + a + "'");
     else if (o.scenePath.empty()) o.scenePath = a;
@@ -85,7 +92,8 @@ Options parseArgs(const std::vector<std::string>& args) {
   if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply, .glb, .3mf, .step, .stp, .igs or .iges)");
   if (o.command != "export" && !o.format.empty()) throw std::runtime_error("--format applies to export only");
   if (o.command != "export" && o.loosePatches) throw std::runtime_error("--patches applies to export only");
-  if (o.command != "export" && (o.tolerance > 0 || o.degree != 5)) throw std::runtime_error("--tol and --degree apply to export only");
+  if (o.command != "export" && (o.tolerance > 0 || o.degree != 5 || o.jobs > 0))
+    throw std::runtime_error("--tol, --degree and --jobs apply to export only");
   return o;
 }
 

@@ -1,4 +1,4 @@
-// pdesurf export SCENE -o F.step|.stp|.igs|.iges [--tol T] [--degree 3|5]: every patch as a
+// pdesurf export SCENE -o F.step|.stp|.igs|.iges [--tol T] [--degree 3|5] [--jobs N]: every patch as a
 // B-spline face with its certified deviation (cpp/cad/). Written to a temporary file beside F
 // and renamed: a patch that cannot reach the tolerance leaves nothing behind.
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include "cad/step_writer.hpp"
 #include "cli.hpp"
 #include "common/errors.hpp"
+#include "parallel_fit.hpp"
 
 namespace pdesurf::cli {
 
@@ -37,13 +38,15 @@ CadFormat cadFormatOf(const Options& o) {
 }
 
 int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
-  const Scene scene = parseScene(readFile(o.scenePath));
+  const std::string text = readFile(o.scenePath);
+  const Scene scene = parseScene(text);
   const auto solved = solveScene(scene);
-  SceneFitOptions fit;
-  fit.tolerance = o.tolerance;
-  fit.degree = o.degree;
-  double tolerance = 0;
-  const std::vector<PatchFit> fits = fitScene(solved, fit, &tolerance);
+  SceneFitOptions options;
+  options.tolerance = o.tolerance;
+  options.degree = o.degree;
+  const FitOptions fit = resolveFitOptions(solved, options);
+  const double tolerance = fit.tolerance;
+  const std::vector<PatchFit> fits = fitSceneOnThreads(text, solved, fit, o.jobs > 0 ? o.jobs : defaultJobs());
   std::vector<BSplineSurface> faces;
   char line[400];
   std::snprintf(line, sizeof line, "tolerance %.3g (scene units; %s)\n", tolerance,
@@ -99,13 +102,13 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
   std::snprintf(line, sizeof line, "  largest gap closed: edges %.2g, vertices %.2g (the file states %.3g)\n", topology.edgeGap, topology.vertexSpread,
                 std::max({tolerance, topology.edgeGap, topology.vertexSpread}));
   out << line;
-  const std::string text = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info, &topology);
+  const std::string file = format == CadFormat::Step ? writeStep(faces, info, &topology) : writeIges(faces, info, &topology);
   // Beside the target, so the rename stays on one file system.
   const std::string temporary = o.output + ".part-" + std::to_string(getpid());
   {
     std::ofstream f(temporary, std::ios::binary);
     if (!f) throw std::runtime_error("cannot write '" + o.output + "'");
-    f << text;
+    f << file;
     f.close();
     if (!f) {
       std::remove(temporary.c_str());

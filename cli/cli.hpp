@@ -11,6 +11,7 @@ struct Options {
   int nu = 16, nv = 16;
   double tolerance = 0.0;  // export to CAD: 0 is the default (1e-6 of the scene's diagonal)
   int degree = 5;
+  int jobs = 0;  // export to CAD: threads fitting patches; 0 is the default (the machine's, at most 8)
   bool gridGiven = false, json = false, controlNet = false;
   bool loosePatches = false;  // export: each patch its own grid mesh (with texture coordinates), not joined
 };

@@ -29,12 +29,30 @@ std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU,
 }
 
 std::vector<EdgePoint> edgeSamplesAt(const SeparableSurface& s, bool alongU, int end, const std::vector<double>& at) {
-  std::vector<EdgePoint> out;
-  for (double a : at) {
-    const double u = alongU ? a : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : a;
-    const Eigen::Vector3d X = evalPoint(s, u, v), Xu = evalPoint(s, u, v, 1, 0), Xv = evalPoint(s, u, v, 0, 1);
-    const Eigen::Vector3d Xuu = evalPoint(s, u, v, 2, 0), Xuv = evalPoint(s, u, v, 1, 1), Xvv = evalPoint(s, u, v, 0, 2);
-    out.push_back(edgePointFrom(alongU, end, X, Xu, Xv, Xuu, Xuv, Xvv));
+  std::vector<EdgePoint> out(at.size());
+  if (at.size() < 2 || at.size() > size_t(kMaxGrid) + 1) {
+    for (size_t k = 0; k < at.size(); ++k) {
+      const double u = alongU ? at[k] : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : at[k];
+      const Eigen::Vector3d X = evalPoint(s, u, v), Xu = evalPoint(s, u, v, 1, 0), Xv = evalPoint(s, u, v, 0, 1);
+      const Eigen::Vector3d Xuu = evalPoint(s, u, v, 2, 0), Xuv = evalPoint(s, u, v, 1, 1), Xvv = evalPoint(s, u, v, 0, 2);
+      out[k] = edgePointFrom(alongU, end, X, Xu, Xv, Xuu, Xuv, Xvv);
+    }
+    return out;
+  }
+  // One tabulation at the edge's parameters and the two ends across it.
+  auto vec = [](const GridRow& row, int q, size_t i) { return Eigen::Vector3d(row.d[q][0][i], row.d[q][1][i], row.d[q][2][i]); };
+  auto point = [&](const GridRow& row, size_t i) {
+    return edgePointFrom(alongU, end, vec(row, 0, i), vec(row, 1, i), vec(row, 2, i), vec(row, 3, i), vec(row, 4, i), vec(row, 5, i));
+  };
+  if (!alongU) {
+    const Tabulation t = tabulateAt(s, {s.u0, s.u1}, at, 2);
+    combineRows(t, [&](int j, const GridRow& row) { out[size_t(j)] = point(row, size_t(end)); });
+  } else {
+    const Tabulation t = tabulateAt(s, at, {s.v0, s.v1}, 2);
+    combineRows(t, [&](int j, const GridRow& row) {
+      if (j != end) return;
+      for (size_t i = 0; i < at.size(); ++i) out[i] = point(row, i);
+    });
   }
   return out;
 }

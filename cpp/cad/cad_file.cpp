@@ -1,6 +1,8 @@
 #include "cad/cad_file.hpp"
 #include "common/errors.hpp"
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -70,16 +72,24 @@ CadStamp cadStamp(const CadFileInfo& info) {
 }
 
 std::string formatReal(double x) {
-  // The shortest of 15, 16 and 17 significant digits that reads back as x (17 always does):
-  // 1.1, not 1.1000000000000001.
+  // The shortest form that reads back as x: 1.1, not 1.1000000000000001.
   char buf[40];
+#if defined(__cpp_lib_to_chars)
+  // std::to_chars (Ryu): locale-independent, about twenty times quicker than the loop below.
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, x);
+  std::string s(buf, r.ptr);
+#else
+  // Emscripten's libc++ has no floating-point to_chars: the shortest of 15, 16 and 17
+  // significant digits that reads back (17 always does), a decimal comma made a point.
   for (int digits = 15; digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*G", digits, x);
     if (std::strtod(buf, nullptr) == x) break;
   }
   std::string s(buf);
   for (char& c : s)
-    if (c == ',') c = '.';  // a host that set a locale with a decimal comma
+    if (c == ',') c = '.';
+#endif
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
   const size_t e = s.find('E');
   if (s.find('.') == std::string::npos) s.insert(e == std::string::npos ? s.size() : e, ".");
   return s;

@@ -28,7 +28,7 @@ struct CadStamp {
 };
 CadStamp cadStamp(const CadFileInfo& info);
 
-// The shortest %.15G..%.17G form that reads back exactly (17 digits round-trip every double),
+// The shortest form that reads back exactly (std::to_chars),
 // with the decimal point STEP and IGES reals require: 3 -> "3.", 1e-07 -> "1.E-07".
 std::string formatReal(double x);
 

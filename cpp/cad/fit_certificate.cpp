@@ -4,6 +4,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "cad/grid_partials.hpp"
+
 namespace pdesurf {
 namespace {
 
@@ -62,48 +64,55 @@ FourthBounds splineFourthBounds(const BSplineSurface& b) {
   return out;
 }
 
-Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridPartials& B, const FourthBounds& bs,
+Certificate certify(const CertificateGrid& g, GridPartials&& S, const BSplineSurface& b, const FourthBounds& bs,
                     const FourthBounds& bb, double scale) {
   const Eigen::Index mu = Eigen::Index(g.u.size()), mv = Eigen::Index(g.v.size());
   Certificate out;
-  // e = S - B at grid points, per partial and component.
-  GridPartials e;
-  for (int k = 0; k < 5; ++k)
-    for (int c = 0; c < 3; ++c) e[size_t(k)][size_t(c)] = (S[size_t(k)][size_t(c)] - B[size_t(k)][size_t(c)]).cwiseAbs();
-  Eigen::MatrixXd pointError = Eigen::MatrixXd::Zero(mu, mv);
-  for (int c = 0; c < 3; ++c) pointError += e[0][size_t(c)].cwiseAbs2();
-  pointError = pointError.cwiseSqrt();
-  out.sampled = pointError.maxCoeff();
   // Normals: the angle between S_u × S_v and B_u × B_v on the borders u = u0 and u = u1,
   // where a patch's ends join (a blend's, a fill's side, a primary's trimline), skipping points where S's own
   // normal is ill-conditioned in the parameters: a tangent under 1% of its largest on the patch
   // (a collapsed or nearly collapsed border: the normal's error there is e_v / |S_v|) or
-  // tangents within 0.06° of parallel.
-  Eigen::MatrixXd angle = Eigen::MatrixXd::Zero(mu, mv);
+  // tangents within 0.06° of parallel. S's tangents there are kept before S becomes e.
   double maxSu = 0, maxSv = 0;
   {
     Eigen::MatrixXd su2 = Eigen::MatrixXd::Zero(mu, mv), sv2 = su2;
     for (int c = 0; c < 3; ++c) su2 += S[1][size_t(c)].cwiseAbs2(), sv2 += S[2][size_t(c)].cwiseAbs2();
     maxSu = std::sqrt(su2.maxCoeff()), maxSv = std::sqrt(sv2.maxCoeff());
   }
-  (void)scale;
-  auto normalAt = [&](Eigen::Index i, Eigen::Index j) {
-    if (!g.vCrease.empty() && g.vCrease[size_t(j)]) return;
-    Eigen::Vector3d su, sv, bu, bv;
+  std::array<Eigen::MatrixXd, 2> borderSu, borderSv;  // per border row: 3 × mv
+  for (int side = 0; side < 2; ++side) {
+    borderSu[size_t(side)].resize(3, mv), borderSv[size_t(side)].resize(3, mv);
     for (int c = 0; c < 3; ++c) {
-      su[c] = S[1][size_t(c)](i, j), sv[c] = S[2][size_t(c)](i, j);
-      bu[c] = B[1][size_t(c)](i, j), bv[c] = B[2][size_t(c)](i, j);
+      borderSu[size_t(side)].row(c) = S[1][size_t(c)].row(side ? mu - 1 : 0);
+      borderSv[size_t(side)].row(c) = S[2][size_t(c)].row(side ? mu - 1 : 0);
     }
+  }
+  // e = S - B at grid points, per partial and component, in place (the largest grids hold
+  // millions of points: one copy of the fifteen partials, not three).
+  GridPartials& e = S;
+  subtractSpline(b, g.u, g.v, e);
+  Eigen::MatrixXd pointError = Eigen::MatrixXd::Zero(mu, mv);
+  for (int c = 0; c < 3; ++c) pointError += e[0][size_t(c)].cwiseAbs2();
+  pointError = pointError.cwiseSqrt();
+  out.sampled = pointError.maxCoeff();
+  Eigen::MatrixXd angle = Eigen::MatrixXd::Zero(mu, mv);
+  (void)scale;
+  auto normalAt = [&](int side, Eigen::Index j) {
+    if (!g.vCrease.empty() && g.vCrease[size_t(j)]) return;
+    const Eigen::Index i = side ? mu - 1 : 0;
+    Eigen::Vector3d su = borderSu[size_t(side)].col(j), sv = borderSv[size_t(side)].col(j), bu, bv;
+    for (int c = 0; c < 3; ++c) bu[c] = su[c] - e[1][size_t(c)](i, j), bv[c] = sv[c] - e[2][size_t(c)](i, j);
     const Eigen::Vector3d ns = su.cross(sv), nb = bu.cross(bv);
     if (ns.norm() <= 1e-3 * su.norm() * sv.norm() || su.norm() <= 1e-2 * maxSu || sv.norm() <= 1e-2 * maxSv) return;
     angle(i, j) = std::atan2(ns.cross(nb).norm(), ns.dot(nb)) * 180.0 / M_PI;
   };
-  for (Eigen::Index j = 0; j < mv; ++j) normalAt(0, j), normalAt(mu - 1, j);
+  for (Eigen::Index j = 0; j < mv; ++j) normalAt(0, j), normalAt(1, j);
   out.normalDeg = angle.maxCoeff();
   out.cell.resize(mu - 1, mv - 1);
   out.cellNormalDeg.resize(mu - 1, mv - 1);
   out.cellSampled.resize(mu - 1, mv - 1);
-  out.uDominant.resize(mu - 1, mv - 1);
+  out.cellSlackU.resize(mu - 1, mv - 1);
+  out.cellSlackV.resize(mu - 1, mv - 1);
   // Column-major matrices: i runs inside (contiguous); the cells' squared half-widths once.
   std::vector<double> h2(size_t(std::max<Eigen::Index>(mu - 1, 0))), k2(size_t(std::max<Eigen::Index>(mv - 1, 0)));
   for (Eigen::Index i = 0; i + 1 < mu; ++i) h2[size_t(i)] = (g.u[size_t(i) + 1] - g.u[size_t(i)]) * (g.u[size_t(i) + 1] - g.u[size_t(i)]) / 8;
@@ -114,22 +123,26 @@ Certificate certify(const CertificateGrid& g, const GridPartials& S, const GridP
       const int su = g.uSpan[size_t(i)], sv = g.vSpan[size_t(j)];
       double sum2 = 0.0, uPart = 0.0, vPart = 0.0;
       auto corners = [&](const Eigen::MatrixXd& m) { return std::max(std::max(m(i, j), m(i + 1, j)), std::max(m(i, j + 1), m(i + 1, j + 1))); };
+      auto cornersAbs = [&](const Eigen::MatrixXd& m) {
+        return std::max(std::max(std::abs(m(i, j)), std::abs(m(i + 1, j))), std::max(std::abs(m(i, j + 1)), std::abs(m(i + 1, j + 1))));
+      };
       for (int c = 0; c < 3; ++c) {
         const double a40 = bs[0][size_t(c)](su, sv) + bb[0][size_t(c)](su, sv);
         const double a22 = bs[1][size_t(c)](su, sv) + bb[1][size_t(c)](su, sv);
         const double a04 = bs[2][size_t(c)](su, sv) + bb[2][size_t(c)](su, sv);
         // One level down: e_uu and e_vv over the cell, from their corners and e's fourth derivatives.
-        const double muu = corners(e[3][size_t(c)]) + h * a40 + k * a22;
-        const double mvv = corners(e[4][size_t(c)]) + h * a22 + k * a04;
-        const double bound = corners(e[0][size_t(c)]) + h * muu + k * mvv;
+        const double muu = cornersAbs(e[3][size_t(c)]) + h * a40 + k * a22;
+        const double mvv = cornersAbs(e[4][size_t(c)]) + h * a22 + k * a04;
+        const double bound = cornersAbs(e[0][size_t(c)]) + h * muu + k * mvv;
         sum2 += bound * bound;
-        uPart += h * muu;
-        vPart += k * mvv;
+        uPart += (h * muu) * (h * muu);
+        vPart += (k * mvv) * (k * mvv);
       }
       out.cell(i, j) = std::sqrt(sum2) * (1 + 1e-12);
       out.cellSampled(i, j) = corners(pointError);
       out.cellNormalDeg(i, j) = corners(angle);
-      out.uDominant(i, j) = uPart >= vPart;
+      out.cellSlackU(i, j) = std::sqrt(uPart);
+      out.cellSlackV(i, j) = std::sqrt(vPart);
     }
   out.bound = out.cell.size() ? out.cell.maxCoeff() : 0.0;
   return out;

@@ -30,14 +30,16 @@ struct Certificate {
   Eigen::MatrixXd cell;       // each cell's bound
   Eigen::MatrixXd cellSampled;  // each cell's largest corner error
   Eigen::MatrixXd cellNormalDeg;  // each cell's largest corner normal angle
-  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> uDominant;  // the u terms are the larger part of the slack
+  // Each cell's slack (the bound less its corners' part): the u (h²) terms and the v (k²) terms.
+  Eigen::MatrixXd cellSlackU, cellSlackV;
 };
 
 // B's fourth-derivative bounds per block, from its differenced poles.
 FourthBounds splineFourthBounds(const BSplineSurface& b);
 
-// S and B tabulated on the grid, and the fourth-derivative bounds of both.
-Certificate certify(const CertificateGrid& grid, const GridPartials& S, const GridPartials& B, const FourthBounds& boundS,
+// S tabulated on the grid (consumed: it becomes S - B in place), B the fit, and the
+// fourth-derivative bounds of both.
+Certificate certify(const CertificateGrid& grid, GridPartials&& S, const BSplineSurface& b, const FourthBounds& boundS,
                     const FourthBounds& boundB, double scale);
 
 }  // namespace pdesurf

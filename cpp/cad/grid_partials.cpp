@@ -71,21 +71,35 @@ GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double
   return out;
 }
 
-GridPartials tabulateSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v) {
-  std::array<Eigen::SparseMatrix<double>, 3> nu, nv;
+namespace {
+
+// B's partials on the grid, each handed to `use(k, c, matrix)` as it is made (one at a time:
+// the certificate subtracts them in place rather than holding B's fifteen beside S's).
+template <class Use>
+void splinePartials(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v, Use&& use) {
+  std::array<Eigen::SparseMatrix<double>, 3> nu, nvT;
   for (int d = 0; d < 3; ++d) {
     nu[size_t(d)] = collocation(b.knotsU, b.degreeU, u, d);
-    nv[size_t(d)] = collocation(b.knotsV, b.degreeV, v, d);
+    nvT[size_t(d)] = collocation(b.knotsV, b.degreeV, v, d).transpose();
   }
-  GridPartials out;
   for (int c = 0; c < 3; ++c) {
     Eigen::MatrixXd net(b.countU, b.countV);
     for (int i = 0; i < b.countU; ++i)
       for (int j = 0; j < b.countV; ++j) net(i, j) = b.pole(i, j)[c];
-    for (int k = 0; k < 5; ++k)
-      out[size_t(k)][size_t(c)] = (nu[size_t(kFitPartials[k][0])] * net) * Eigen::SparseMatrix<double>(nv[size_t(kFitPartials[k][1])].transpose());
+    for (int k = 0; k < 5; ++k) use(k, c, Eigen::MatrixXd((nu[size_t(kFitPartials[k][0])] * net) * nvT[size_t(kFitPartials[k][1])]));
   }
+}
+
+}  // namespace
+
+GridPartials tabulateSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v) {
+  GridPartials out;
+  splinePartials(b, u, v, [&](int k, int c, Eigen::MatrixXd&& m) { out[size_t(k)][size_t(c)] = std::move(m); });
   return out;
+}
+
+void subtractSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v, GridPartials& X) {
+  splinePartials(b, u, v, [&](int k, int c, Eigen::MatrixXd&& m) { X[size_t(k)][size_t(c)] -= m; });
 }
 
 }  // namespace pdesurf

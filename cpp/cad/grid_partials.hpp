@@ -15,5 +15,7 @@ namespace pdesurf {
 GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v);
 // The same for a B-spline surface, from its basis functions' collocation matrices.
 GridPartials tabulateSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v);
+// X - B in place, B's partials made one at a time.
+void subtractSpline(const BSplineSurface& b, const std::vector<double>& u, const std::vector<double>& v, GridPartials& X);
 
 }  // namespace pdesurf

@@ -19,29 +19,38 @@ double sceneDiagonal(const std::vector<SolvedPatch>& solved) {
   return solved.empty() || !(hi.x() >= lo.x()) ? 0.0 : (hi - lo).norm();
 }
 
-std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const SceneFitOptions& o, double* tolerance) {
+FitOptions resolveFitOptions(const std::vector<SolvedPatch>& solved, const SceneFitOptions& o) {
   FitOptions fit;
   fit.degree = o.degree;
   fit.tolerance = o.tolerance;
   if (o.tolerance == 0.0) fit.tolerance = kDefaultFitTolerance * sceneDiagonal(solved);
   if (!(fit.tolerance > 0) || !std::isfinite(fit.tolerance))
     throw Error(ErrorCode::InvalidField, "tolerance: must be a positive finite number");
+  return fit;
+}
+
+PatchFit fitPatch(const SolvedPatch& sp, const FitOptions& fit) {
+  PatchFit f;
+  try {
+    if (sp.patch->kind == PatchKind::Bezier) {
+      f.surface = bezierAsBSpline(sp.patch->bezier.n, sp.patch->bezier.m, sp.controlNet);
+      f.report.exact = true;
+    } else {
+      f.surface = fitSurface(sp.surface, fit, &f.report);
+    }
+  } catch (const Error& e) {
+    throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+  }
+  f.surface.name = sp.patch->name;
+  return f;
+}
+
+std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const SceneFitOptions& o, double* tolerance) {
+  const FitOptions fit = resolveFitOptions(solved, o);
   if (tolerance) *tolerance = fit.tolerance;
   std::vector<PatchFit> out;
   for (const SolvedPatch& sp : solved) {
-    PatchFit f;
-    try {
-      if (sp.patch->kind == PatchKind::Bezier) {
-        f.surface = bezierAsBSpline(sp.patch->bezier.n, sp.patch->bezier.m, sp.controlNet);
-        f.report.exact = true;
-      } else {
-        f.surface = fitSurface(sp.surface, fit, &f.report);
-      }
-    } catch (const Error& e) {
-      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
-    }
-    f.surface.name = sp.patch->name;
-    out.push_back(std::move(f));
+    out.push_back(fitPatch(sp, fit));
     if (o.progress) o.progress(out.size(), solved.size(), sp.patch->name);
   }
   return out;

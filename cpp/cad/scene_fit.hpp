@@ -28,6 +28,15 @@ constexpr double kDefaultFitTolerance = 1e-6;  // of the scene's bounding-box di
 // The bounding-box diagonal of every patch, from a 33×33 grid each.
 double sceneDiagonal(const std::vector<SolvedPatch>& solved);
 
+// FitOptions of the scene: the tolerance resolved (0: the default of the diagonal) and checked
+// (Error InvalidField when it is not positive and finite).
+FitOptions resolveFitOptions(const std::vector<SolvedPatch>& solved, const SceneFitOptions& options);
+
+// One patch's face: a Bézier net as it is, else the certified fit. Errors name the patch. Reads
+// only `patch` (and its surface's expressions): patches of different threads' solved scenes can
+// be fitted at once.
+PatchFit fitPatch(const SolvedPatch& patch, const FitOptions& fit);
+
 // Throws Error naming the patch ("patch 'blend': the fit reached …") when one cannot reach the
 // tolerance within the limits; nothing is returned then. *tolerance gets the one used.
 std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const SceneFitOptions& options,

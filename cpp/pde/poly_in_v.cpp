@@ -43,7 +43,7 @@ double fallingFactorial(int top, int count) {
 // Inverse of the Hermite matrix of u^0..u^{2n-1} (rows: end, derivative order), per n, built
 // once: it is the same for every solve.
 const Eigen::MatrixXd& hermiteInverse(int n) {
-  static std::vector<Eigen::MatrixXd> cache;
+  thread_local std::vector<Eigen::MatrixXd> cache;  // per thread: the CLI fits patches on several
   if (static_cast<int>(cache.size()) <= n) cache.resize(n + 1);
   Eigen::MatrixXd& inv = cache[n];
   if (inv.size() == 0) {

@@ -244,3 +244,28 @@ test('a tolerance that is not a positive finite number, or a degree other than 3
   assert.match(r.stderr, /--degree expects 3 or 5/);
   assert.equal(existsSync(join(dir, 'bad.step')), false);
 });
+
+test('--jobs: the patches fitted on 1, 2 or 3 threads give the same file, the same error, and bad counts are refused', () => {
+  // fig8c: 15 patches, fills among them; each thread solves its own copy of the scene.
+  const bytes = [1, 2, 3].map((jobs) => {
+    const file = join(dir, `jobs${jobs}.igs`);
+    const r = spawnSync(cli, ['export', example('you2004-fig8c'), '-o', file, '--jobs', String(jobs)], { encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    return readFileSync(file);
+  });
+  assert.ok(bytes[0].equals(bytes[1]) && bytes[0].equals(bytes[2]), 'the IGES files differ between thread counts');
+  // Every patch fails at 1e-300: the error is the first patch handed out, whatever the threads.
+  const errors = [1, 3].map((jobs) => {
+    const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'never.igs'), '--tol', '1e-300', '--jobs', String(jobs)], { encoding: 'utf8' });
+    assert.equal(r.status, 1);
+    return r.stderr;
+  });
+  assert.equal(errors[0], errors[1]);
+  for (const bad of ['0', '65', '-2', '1.5', 'two', '']) {
+    const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'bad.step'), '--jobs', bad], { encoding: 'utf8' });
+    assert.equal(r.status, 1, bad);
+    assert.match(r.stderr, /--jobs expects a whole number from 1 to 64/);
+  }
+  const r = spawnSync(cli, ['check', example('you2004-fig4a'), '--jobs', '2'], { encoding: 'utf8' });
+  assert.match(r.stderr, /--jobs apply to export only/);
+});
