@@ -16,6 +16,8 @@
 #include "surface/mesh.hpp"
 #include "surface/tabulation.hpp"
 #include "js_values.hpp"
+#include "kept_solve.hpp"
+#include "report_values.hpp"
 
 using emscripten::val;
 using namespace pdesurf;
@@ -110,86 +112,15 @@ void setBezierExtras(val& p, const SolvedPatch& sp) {
 }
 
 // The join certificate as plain data (docs/wasm-api.md); crossings, on a 48×48 mesh per patch,
-// only when asked: they cost several times a re-solve.
+// only when asked: they cost several times a re-solve. All at once, in the solve's call (the
+// page asks for it part by part instead: report_bindings.cpp).
 val reportOf(const Scene& scene, const std::vector<SolvedPatch>& solved, bool crossings) {
-  val report = val::object();
-  report.set("crossingsChecked", crossings);
   try {
     const SceneReport r = checkScene(scene, solved, crossings ? 48 : 0);
-    report.set("ok", r.ok);
-    report.set("sceneSize", r.sceneSize);
-    const auto joinObject = [](const JoinResult& j) {
-      val o = val::object();
-      o.set("patch", j.patch);
-      o.set("end", j.end);
-      o.set("surface", j.surface);
-      o.set("edge", j.edge);
-      o.set("level", std::string(levelName(j.level)));
-      o.set("g0", j.g0);
-      o.set("g1_deg", j.g1Deg);
-      o.set("g2_rel", j.level == 2 ? val(j.g2Rel) : val::null());
-      o.set("fold", j.fold);
-      o.set("degenerate", j.degenerate);
-      o.set("worstV", j.worstV);
-      o.set("ok", j.ok);
-      return o;
-    };
-    val joins = val::array(), seams = val::array();
-    for (const JoinResult& j : r.joins) joins.call<void>("push", joinObject(j));
-    // Closed patches joined to themselves across v0 = v1 (worstV: the u where it is worst).
-    for (const JoinResult& j : r.seams) seams.call<void>("push", joinObject(j));
-    report.set("seams", seams);
-    report.set("joins", joins);
-    val crossings = val::array();
-    for (const Crossing& c : r.crossings) {
-      val o = val::object();
-      o.set("patch", c.patch);
-      o.set("other", c.other);
-      o.set("u", val::array(std::vector<double>{c.u[0], c.u[1]}));
-      o.set("v", val::array(std::vector<double>{c.v[0], c.v[1]}));
-      o.set("triangles", c.triangles);
-      crossings.call<void>("push", o);
-    }
-    report.set("crossings", crossings);
-    val centres = val::array();  // every fill's centre (version 4)
-    for (const FillCentre& c : r.centres) {
-      val o = val::object();
-      o.set("patch", c.patch);
-      o.set("normalSpreadDeg", c.normalSpreadDeg);
-      o.set("normalSpreadOuterDeg", c.normalSpreadOuterDeg);
-      o.set("fold", c.fold);
-      o.set("curvatureNear", c.curvatureNear);
-      o.set("curvatureRatio", c.curvatureRatio);
-      o.set("ok", c.ok);
-      centres.call<void>("push", o);
-    }
-    report.set("centres", centres);
-    // The model's bodies (issue 36): closed or open, area, a closed one's volume.
-    val bodies = val::array();
-    for (const Body& b : measureBodies(solved, r.sceneSize)) {
-      val o = val::object();
-      val names = val::array();
-      for (const std::string& n : b.patches) names.call<void>("push", n);
-      o.set("patches", names);
-      o.set("closed", b.closed);
-      o.set("area", b.area);
-      o.set("volume", b.volume);
-      o.set("freeEdges", b.freeEdges);
-      bodies.call<void>("push", o);
-    }
-    report.set("bodies", bodies);
+    return wasm::reportValue(r, measureBodies(solved, r.sceneSize), crossings);
   } catch (const Error& e) {
-    // A scene whose declared join is wrong still draws; the report says why it cannot certify.
-    val err = val::object();
-    err.set("code", std::string(errorCodeName(e.code())));
-    err.set("message", std::string(e.what()));
-    report.set("ok", false);
-    report.set("error", err);
-    report.set("joins", val::array());
-    report.set("seams", val::array());
-    report.set("crossings", val::array());
+    return wasm::reportFailure(e, crossings);
   }
-  return report;
 }
 
 // What a kept mesh was made from: a pde patch's memoised solve (SolvedPatch::solveId) on a grid.
@@ -205,12 +136,16 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
   return guarded("try a smaller grid", [&]() -> val {
     const int nu = gridArg(nuArg, "nu"), nv = gridArg(nvArg, "nv");
     checkGrid(nu, nv);
-    const Scene scene = parseScene(sceneJson);
+    auto kept = std::make_shared<const Scene>(parseScene(sceneJson));
+    const Scene& scene = *kept;
     checkSceneGrid(scene, nu, nv);
     // Kept between calls: a slider that moves a trimline reuses every ODE basis, a drag of a
     // Bézier control point its factorisation.
     static SolveCache cache;
-    const auto solved = solveScene(scene, &cache);
+    auto keptSolved = std::make_shared<const std::vector<SolvedPatch>>(solveScene(scene, &cache));
+    const std::vector<SolvedPatch>& solved = *keptSolved;
+    // The last solve, for its report part by part (reportBegin, reportStep).
+    wasm::keepSolve(std::move(kept), std::move(keptSolved));
     // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
     // buffers, uvs and indices are reused instead of rebuilt.
     static std::vector<Mesh> meshes;

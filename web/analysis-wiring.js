@@ -3,7 +3,9 @@
 // highlights in the view. Curvature comes from the module per vertex (solveSceneWith
 // {curvature: true}), asked for only while a curvature map is shown; the join report
 // ({joins: true}) with every solve, its crossing test ({crossings: true}, several times the
-// cost of a re-solve) only while the Joins folder is open. An older module without them still draws: the legend
+// cost of a re-solve) only while the Joins folder is open. The worker draws first and
+// certifies after ('certified'): meanwhile the folder keeps the last report and says
+// "checking…". An older module without them still draws: the legend
 // and the joins folder say what is missing.
 import { buildAnalysisFolder, defaultAnalysisSettings } from './ui/analysis-controls.js';
 import { buildJoinsFolder } from './ui/joins-panel.js';
@@ -27,6 +29,8 @@ export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestS
 
   let patches = [];
   let report = null;
+  let stale = false; // the surfaces on screen are newer than `report` (their own is coming)
+  let checkingShown = 0; // times the folder said "checking…" (for the tests)
   let asked = { curvature: false, joins: false, crossings: false }; // what the last solve asked the module for
   let overrides = new Map(); // the user's ticks in the joins folder, by join key
   let scale = null; // the curvature map's scale, for the tests
@@ -59,17 +63,19 @@ export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestS
   }
 
   function applyJoins() {
+    if (stale) checkingShown++;
     if (!report || report.error) {
-      joins.message(report ? `cannot certify the joins: ${report.error.code}: ${report.error.message}`
-        : hasAnalysis ? 'no join report for this scene' : NO_REPORT);
-      joins.folder.title('Joins');
+      joins.message(stale ? 'checking the joins…'
+        : report ? `cannot certify the joins: ${report.error.code}: ${report.error.message}`
+          : hasAnalysis ? 'no join report for this scene' : NO_REPORT);
+      joins.folder.title(stale ? 'Joins (checking…)' : 'Joins');
       viewer.highlightJoins([]);
       return;
     }
     const keys = highlightedKeys(report, overrides);
     joins.show(report, keys);
     const fails = report.joins.filter((j) => !j.ok).length + (report.seams || []).filter((j) => !j.ok).length;
-    joins.folder.title(fails ? `Joins (${fails} FAIL)` : 'Joins');
+    joins.folder.title(stale ? 'Joins (checking…)' : fails ? `Joins (${fails} FAIL)` : 'Joins');
     const byKey = new Map(report.joins.map((j) => [joinKey(j), j]));
     viewer.highlightJoins(keys.map((k) => {
       const j = byKey.get(k);
@@ -101,8 +107,16 @@ export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestS
     solved(result, options) {
       patches = result.patches;
       asked = { curvature: Boolean(options.curvature), joins: Boolean(options.joins), crossings: Boolean(options.crossings) };
-      report = result.report ?? null; // checked by the solver wrapper (state/join-report.js)
+      // Checked by the solver wrapper (state/join-report.js); or coming after (certified).
+      stale = Boolean(result.reportPending);
+      if (!stale) report = result.report ?? null;
       applyShading();
+      applyJoins();
+    },
+    /** The join report of the solve on screen, measured after it was drawn. */
+    certified(r) {
+      report = r;
+      stale = false;
       applyJoins();
     },
     /** Another scene opens: the user's join ticks were for the old one. */
@@ -133,11 +147,15 @@ export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestS
         scale,
         legend: legend.current(),
         report,
+        reportStale: stale,
+        checkingShown,
+        joinsTitle: joins.folder.domElement.querySelector('.title')?.textContent ?? '',
       };
     },
   };
   // A feature of the document: it hears of new scenes and drawn solves itself.
   doc.on('opened', () => api.newScene());
   doc.on('drawn', (result, job) => api.solved(result, job.options));
+  doc.on('certified', (r) => api.certified(r));
   return api;
 }

@@ -204,6 +204,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   doc.on('opened', () => api.sceneShown());
   doc.on('restored', () => api.sceneShown());
   doc.on('drawn', (result, job) => api.drawn(result.patches, job.scene, result.report));
+  doc.on('certified', (report) => outliner.showBodies((report?.bodies ?? []).map(bodyText)));
 
   hooks.build = () => ({ pickMode, gizmoMode, selection: doc.selection(), hidden: [...hidden] });
 
@@ -217,7 +218,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     /** A good solve of `sceneText` was drawn: borders and the gizmo's mesh are the new ones. */
     drawn(patches, sceneText, report) {
       drawn = patches;
-      outliner.showBodies((report?.bodies ?? []).map(bodyText));
+      if (report) outliner.showBodies((report.bodies ?? []).map(bodyText)); // else kept until certified
       drawnText = sceneText;
       drawnScene = null;
       for (const name of hidden) viewer.setPatchVisible(name, false);

@@ -48,10 +48,11 @@ function fail(err) {
 
 async function start() {
   // Results reach the session once it exists (it needs the examples and the view).
-  const relay = { result: () => {}, error: () => {} };
+  const relay = { result: () => {}, error: () => {}, report: () => {} };
   const solver = createSolverClient({
     onResult: (...args) => relay.result(...args),
     onError: (...args) => relay.error(...args),
+    onReport: (...args) => relay.report(...args),
     onBusy: (ms) => status.busy(ms),
   });
   try {

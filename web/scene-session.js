@@ -4,7 +4,9 @@
 //   'opened'  (scene, { exampleId, title })  another scene is on screen (fresh overlays)
 //   'restored' (scene)                       an undo or redo within the same scene
 //   'solved'  (result, job)                  a good solve, before it is drawn
-//   'drawn'   (result, job)                  after it is drawn
+//   'drawn'   (result, job)                  after it is drawn (result.reportPending: its join
+//                                            report, asked for, comes after)
+//   'certified' (report, job)                the join report of the solve last drawn
 // Opening and links stay explicit (share, files, history): they decide what a solve means.
 import { withGridTopology } from './viewer/grid-topology.js';
 import { DEFAULT_GRID } from './state/scene-state.js';
@@ -44,6 +46,9 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   // The wasm module lives in a worker (solver/solver-worker.js): no solve on this thread.
   relay.result = applyResult;
   relay.error = applyFailure;
+  relay.report = applyReport;
+  let drawnJob = null; // the job of the solve last drawn
+  let earlyReport = null; // { report, job }: a report that came before its solve was drawn (the first scene's)
   hooks.solverRestarts = () => solver.restarts;
   const scheduler = createSolveScheduler(solveNow);
 
@@ -195,6 +200,19 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     solver.request({ scene: text, grid, options: { ...grid, ...parts.solveOptions() }, edited, token: sceneToken, requestedAt: performance.now() });
   }
 
+  // The join report of a drawn solve (the worker certifies after drawing).
+  function applyReport(report, job, ms) {
+    if (job !== drawnJob) {
+      earlyReport = { report, job, ms };
+      return;
+    }
+    hooks.reportPending = false;
+    hooks.reportCount = (hooks.reportCount ?? 0) + 1;
+    // For the tests: when it came (after its solve was drawn) and the worker's time for it.
+    hooks.lastReport = { ms, solveCount: hooks.solveCount, at: performance.now(), requestedAt: job.requestedAt };
+    doc.emit('certified', report, job);
+  }
+
   function applyFailure(err, job) {
     flushPresent();
     hooks.solveCount++;
@@ -250,7 +268,12 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     state.noteSolved(result.patches);
     doc.emit('solved', result, job);
     if (!drawn) draw(result, job);
+    drawnJob = job;
+    hooks.reportPending = Boolean(result.reportPending);
+    hooks.lastDrawnAt = performance.now();
     doc.emit('drawn', result, job);
+    if (earlyReport?.job === job) applyReport(earlyReport.report, job, earlyReport.ms);
+    earlyReport = null;
     panel.showSolved(result.patches);
     hooks.lastError = null;
     if (!hooks.ready) hooks.readyAt = performance.now(); // first result handled (its frame already shown)

@@ -247,42 +247,46 @@ double sceneSizeOf(const std::vector<SolvedPatch>& solved) {
   return std::isfinite(d) && d > 0 ? d : 1.0;
 }
 
+JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, double size, const EdgeReader& read) {
+  const Patch& p = *solved[i].patch;
+  const Meets& m = p.meets[k];
+  try {
+    return certifyOne(p, m, solved[i], solvedOf(solved, m.patch), size, read);
+  } catch (const Error& e) {
+    // A join derived from an end is that end's; the scene's own is the surface's `meets`.
+    size_t index = 0;
+    while (index < scene.patches.size() && &scene.patches[index] != &p) ++index;
+    throw Error(e.code(), (m.by.empty() ? "patches[" + std::to_string(index) + "].meets" : m.by) + ": " + e.what());
+  }
+}
+
 std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double size, const EdgeReader& read) {
   std::vector<JoinResult> out;
-  for (size_t i = 0; i < solved.size(); ++i) {
-    const Patch& p = *solved[i].patch;
-    for (const Meets& m : p.meets) {
-      const SolvedPatch& target = solvedOf(solved, m.patch);
-      try {
-        out.push_back(certifyOne(p, m, solved[i], target, size, read));
-      } catch (const Error& e) {
-        // A join derived from an end is that end's; the scene's own is the surface's `meets`.
-        size_t index = 0;
-        while (index < scene.patches.size() && &scene.patches[index] != &p) ++index;
-        throw Error(e.code(), (m.by.empty() ? "patches[" + std::to_string(index) + "].meets" : m.by) + ": " + e.what());
-      }
-    }
-  }
+  for (size_t i = 0; i < solved.size(); ++i)
+    for (size_t k = 0; k < solved[i].patch->meets.size(); ++k) out.push_back(certifyJoin(scene, solved, i, k, size, read));
   return out;
+}
+
+std::optional<JoinResult> certifySeam(const SolvedPatch& sp, double size) {
+  const SeparableSurface& s = sp.surface;
+  if (sp.patch->kind != PatchKind::Pde || !closesInV(s, size)) return std::nullopt;
+  JoinResult r;
+  r.patch = r.surface = sp.patch->name;
+  r.end = "v1", r.edge = "v0";
+  r.level = seamLevel(*sp.patch, s, size);
+  // v = v1 (its inward derivative -X_v) against v = v0 (+X_v), point by point along u, on the
+  // open interval: the ends u0, u1 are the loops' own points (a fill's corner, its centre).
+  const auto B = openEdgeSamples(s, true, 1, s.u0, s.u1, kJoinSamples), P = openEdgeSamples(s, true, 0, s.u0, s.u1, kJoinSamples);
+  const int measured = compareEdges(B, P, s.u0, s.u1, size, &r);
+  if (r.level == 0) r.fold = false;
+  r.ok = keepsPromise(r, measured);
+  return r;
 }
 
 std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double size) {
   std::vector<JoinResult> out;
-  for (const SolvedPatch& sp : solved) {
-    const SeparableSurface& s = sp.surface;
-    if (sp.patch->kind != PatchKind::Pde || !closesInV(s, size)) continue;
-    JoinResult r;
-    r.patch = r.surface = sp.patch->name;
-    r.end = "v1", r.edge = "v0";
-    r.level = seamLevel(*sp.patch, s, size);
-    // v = v1 (its inward derivative -X_v) against v = v0 (+X_v), point by point along u, on the
-    // open interval: the ends u0, u1 are the loops' own points (a fill's corner, its centre).
-    const auto B = openEdgeSamples(s, true, 1, s.u0, s.u1, kJoinSamples), P = openEdgeSamples(s, true, 0, s.u0, s.u1, kJoinSamples);
-    const int measured = compareEdges(B, P, s.u0, s.u1, size, &r);
-    if (r.level == 0) r.fold = false;
-    r.ok = keepsPromise(r, measured);
-    out.push_back(r);
-  }
+  for (const SolvedPatch& sp : solved)
+    if (auto r = certifySeam(sp, size)) out.push_back(*r);
   return out;
 }
 

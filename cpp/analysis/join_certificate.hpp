@@ -5,6 +5,7 @@
 // G2; a membrane Bézier G0, a thin plate G1); plus the crossings found (analysis/crossings).
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,10 +66,15 @@ JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const Sol
 // are the solved surfaces' tolerances; another reader's caller judges its own.
 std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize,
                                      const EdgeReader& read = nullptr);
+// One of them: patch solved[i]'s declared join meets[k] (errors named as certifyJoins names them).
+JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, double sceneSize,
+                       const EdgeReader& read = nullptr);
 // Every pde patch whose v closes on itself (both u-edges are loops) joined to itself along
 // v = v0 and v = v1: patch = surface = its name, end "v1", edge "v0", worstV the u where the
 // figure is worst. At least G1, G2 where the patch promises curvature.
 std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double sceneSize);
+// One of them: nothing when the patch is not a pde patch closed in v.
+std::optional<JoinResult> certifySeam(const SolvedPatch& patch, double sceneSize);
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
 // Joins, seams, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);

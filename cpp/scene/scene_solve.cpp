@@ -9,6 +9,7 @@
 #include "basis/general_function.hpp"
 #include "scene/chain_conditions.hpp"
 #include "scene/scene.hpp"
+#include "surface/same_surface.hpp"
 #include "surface/tabulation.hpp"
 
 namespace pdesurf {
@@ -89,13 +90,6 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
 namespace {
 
 constexpr double kBoundaryMiss = 1e-6;
-
-bool sameFunction(const VFunction& a, const VFunction& b) {
-  if (a.isGeneral() != b.isGeneral()) return false;
-  // Expressions are interned: the same expression is the same node while either is alive.
-  if (a.isGeneral()) return a.general->expr() == b.general->expr();
-  return a == b;
-}
 
 bool sameExpansion(const VExpansion& a, const VExpansion& b) {
   if (a.size() != b.size()) return false;

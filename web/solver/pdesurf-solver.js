@@ -71,7 +71,28 @@ export async function loadSolver(opts = {}) {
     solve: (scene, grid = {}) => solveWith(Module, scene, grid),
     exportCad: (scene, options = {}) => exportCadWith(Module, scene, options),
     modelMesh: (scene, grid = {}) => modelMeshWith(Module, scene, grid),
+    reportBegin: (options = {}) => reportBeginWith(Module, options),
+    reportStep: (budgetMs = 8) => reportStepWith(Module, budgetMs),
   };
+}
+
+// The join report of the last solve, part by part (docs/wasm-api.md): reportBegin({ crossings })
+// -> { parts }; reportStep(budgetMs) -> { done, left, measured, kept, report? } (the report, in
+// the shape solve(…, { joins: true }) gives, once done). Parts whose surfaces did not change
+// since the previous report are kept, not measured again.
+function reportBeginWith(Module, { crossings = false } = {}) {
+  const res = callModule(Module, 'reportBegin', [{ crossings: Boolean(crossings) }], 'report');
+  return { parts: Number(res.parts) };
+}
+
+function reportStepWith(Module, budgetMs) {
+  const res = callModule(Module, 'reportStep', [Number(budgetMs)], 'report');
+  const out = { done: Boolean(res.done), left: Number(res.left ?? 0), measured: Number(res.measured ?? 0), kept: Number(res.kept ?? 0) };
+  if (out.done) {
+    out.report = normaliseReport(res.report);
+    if (!out.report) throw new PdesurfError('Internal', 'the solver returned no join report');
+  }
+  return out;
 }
 
 // The model's watertight mesh for the mesh exports (docs/wasm-api.md, modelMesh): { title,

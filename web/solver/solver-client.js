@@ -2,7 +2,12 @@
 // coalesced (only the newest waiting request runs next), results of an older scene dropped,
 // and a solve that keeps a newer edit waiting too long cancelled by restarting the worker.
 //
-// createSolverClient({ onResult(result, job, ms), onError(error, job), onBusy(ms | null) })
+// createSolverClient({ onResult(result, job, ms), onError(error, job), onBusy(ms | null),
+//                      onReport(report, job, ms) })
+//   onReport: the join report of the result last given to onResult, when its job asked for
+//             it (options.joins): that result came without it (result.reportPending) and the
+//             worker certifies after drawing; a newer solve drops it. A report that failed
+//             comes as { error: { code, message } }.
 //   .request(job)  job: { scene (text), options, token }; a result whose token differs from
 //                  the newest request's is stale and dropped (another scene was opened).
 //   .busy()        true while a solve runs
@@ -32,7 +37,7 @@ import { sameSolve } from './same-solve.js';
 const CANCEL_AFTER_MS = 300;
 const BUSY_AFTER_MS = 100; // "solving…" only for solves one can notice
 
-export function createSolverClient({ onResult, onError, onBusy = () => {}, workerUrl = new URL('./solver-worker.js', import.meta.url) }) {
+export function createSolverClient({ onResult, onError, onBusy = () => {}, onReport = () => {}, workerUrl = new URL('./solver-worker.js', import.meta.url) }) {
   let worker = null;
   let running = null; // { id, job, started }
   let waiting = null; // { job, since }
@@ -46,6 +51,9 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   let ahead = null; // { scene, options, result, ms }: solved before any request (one use)
   let requested = false; // a solve was asked for: a result arriving unasked after is no use
   let aheadListeners = [];
+  let delivered = null; // { ids, job }: the result last given to onResult and the worker requests
+  // whose report is its report ('ahead': the solve done ahead)
+  let reportAhead = null; // the report of the solve done ahead, come before that solve was taken
   const client = { restarts: 0 };
   spawn(); // now: the module loads while the page sets up
   // Only the worker web/boot.js started with the page's hash solves ahead.
@@ -124,6 +132,11 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   }
 
   function finished(msg) {
+    if (msg.kind === 'report') {
+      if (delivered && delivered.ids.includes(msg.id)) reported(msg);
+      else if (msg.id === 'ahead') reportAhead = msg; // before the page took the solve ahead
+      return;
+    }
     if (msg.kind === 'progress') {
       if (exporting && msg.id === exporting.id) exporting.onProgress?.(msg.done, msg.total, msg.patch);
       return;
@@ -141,10 +154,21 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     lastMs = msg.ms;
     stopRunning();
     if (job.token === latestToken) {
-      if (msg.ok) onResult(msg.result, job, msg.ms);
+      if (msg.ok) deliver([msg.id], msg.result, job, msg.ms);
       else onError(msg.error, job);
     }
     next();
+  }
+
+  function deliver(ids, result, job, ms) {
+    delivered = { ids, job };
+    onResult(result, job, ms);
+    if (reportAhead && ids.includes(reportAhead.id)) reported(reportAhead);
+    reportAhead = null;
+  }
+
+  function reported(msg) {
+    if (delivered.job.token === latestToken) onReport(msg.ok ? msg.result : { error: msg.error }, delivered.job, msg.ms);
   }
 
   // A cold start's first scene, solved unasked. Kept for the first request; or the answer to
@@ -152,9 +176,11 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
   function arrivedAhead(msg) {
     if (!msg.result) noneAhead(); // the worker could not solve it (the request will say why)
     else if (running && sameSolve(msg, running.job)) {
-      const { job } = running;
+      const { job, id } = running;
       stopRunning();
-      if (job.token === latestToken) onResult(msg.result, job, msg.ms);
+      // The worker solves the request again and drops the ahead's report for it: its report
+      // is the one that comes.
+      if (job.token === latestToken) deliver(['ahead', id], msg.result, job, msg.ms);
       next();
     } else if (!requested) {
       ahead = msg;
@@ -191,7 +217,7 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, worke
     if (early && !running && !exporting && sameSolve(early, job)) {
       // After the caller's task, as a worker's reply would be (the caller may not be ready).
       queueMicrotask(() => {
-        if (job.token === latestToken) onResult(early.result, job, early.ms);
+        if (job.token === latestToken) deliver(['ahead'], early.result, job, early.ms);
       });
       return;
     }

@@ -16,6 +16,13 @@
 //   out: { id, kind: 'modelMesh', ok: true, result: { title, positions, normals, parts, bodies }, ms }
 // uvs and indices are never sent: they depend on the grid alone and the page builds them
 // (viewer/grid-topology.js).
+// A solve that asks for the join report (options.joins) is answered without it (result.
+// reportPending: true) as soon as its mesh is made; the report follows, measured in slices of
+// REPORT_SLICE_MS between which any message that arrived runs first:
+//   out: { id, kind: 'report', ok: true, result: report, ms, measured, kept } (id 'ahead' for
+//        the solve done ahead), or the same failure as a solve
+// A new solve drops the report in progress (it is of an older scene); any other request
+// (an export) pauses it: it starts again after, keeping the parts already measured.
 import { loadSolver } from './pdesurf-solver.js';
 import { createAheadSolve } from './ahead-solve.js';
 
@@ -72,7 +79,8 @@ function transferablesOf(items) {
 
 const run = {
   solve: (solver, scene, options) => {
-    const result = solver.solve(scene, { ...options, topology: false });
+    const result = solver.solve(scene, { ...options, joins: false, topology: false });
+    if (options?.joins) result.reportPending = true;
     return [result, transferablesOf(result.patches)];
   },
   exportCad: (solver, scene, { format, tolerance }, id) => {
@@ -90,7 +98,36 @@ const run = {
 // The scene a cold start will ask for first, solved as soon as the module is ready, while
 // the page is still loading: web/boot.js starts this worker with the page's hash in its URL
 // (#first=…; a message would wait behind the module's loading).
-const ahead = createAheadSolve(ready, run.solve, (message, transfer) => self.postMessage({ kind: 'ahead', ...message }, transfer));
+const ahead = createAheadSolve(ready, run.solve, (message, transfer) => {
+  self.postMessage({ kind: 'ahead', ...message }, transfer);
+  if (message.result?.reportPending) ready.then((solver) => certifyAfter(solver, 'ahead', message.options));
+});
+
+// The join report of the module's last solve, after its mesh was posted: in slices, so the
+// next edit (a message) runs between them instead of waiting for the whole report.
+const REPORT_SLICE_MS = 8;
+let reporting = null; // { id, options }: the report in progress (its slices check they still are)
+function certifyAfter(solver, id, options) {
+  const job = { id, options, started: performance.now() };
+  reporting = job;
+  const slice = (first) => {
+    if (reporting !== job) return; // a newer solve made it stale, or a request paused it
+    try {
+      if (first) solver.reportBegin({ crossings: Boolean(options?.crossings) });
+      const r = solver.reportStep(REPORT_SLICE_MS);
+      if (!r.done) {
+        setTimeout(() => slice(false));
+        return;
+      }
+      reporting = null;
+      self.postMessage({ id, kind: 'report', ok: true, result: r.report, ms: performance.now() - job.started, measured: r.measured, kept: r.kept });
+    } catch (err) {
+      reporting = null;
+      self.postMessage({ id, kind: 'report', ok: false, error: { code: String(err?.code || 'Internal'), message: String(err?.message || err) } });
+    }
+  };
+  setTimeout(() => slice(true));
+}
 const first = new URLSearchParams(self.location.hash.slice(1)).get('first');
 if (first !== null) {
   asked = true; // the solve ahead warms the module up instead
@@ -100,19 +137,27 @@ if (first !== null) {
 self.onmessage = async (event) => {
   asked = true;
   const { id, kind = 'solve', scene, options } = event.data;
+  // A solve makes the report in progress stale; anything else pauses it (resumed below).
+  const paused = kind === 'solve' ? null : reporting;
+  reporting = null;
   const t0 = performance.now();
   try {
     const early = kind === 'solve' ? await ahead.take(scene, options) : null;
     if (early) {
       self.postMessage({ id, kind, ok: true, result: early.result, ms: early.ms }, early.transfer);
+      if (early.result.reportPending) certifyAfter(await ready, id, options);
       return;
     }
     const solver = await ready;
     if (!Object.hasOwn(run, kind)) throw new Error(`unknown request ${JSON.stringify(kind)}`);
     const [result, transfer] = run[kind](solver, scene, options, id);
     self.postMessage({ id, kind, ok: true, result, ms: performance.now() - t0 }, transfer);
+    if (kind === 'solve' && result.reportPending) certifyAfter(solver, id, options);
   } catch (err) {
     const error = { code: String(err?.code || 'Internal'), message: String(err?.message || err) };
     self.postMessage({ id, kind, ok: false, error, ms: performance.now() - t0 });
   }
+  // The module's last solve is still the paused report's (exports solve on their own): again,
+  // from its first part (the parts measured are kept).
+  if (paused && !reporting) certifyAfter(await ready, paused.id, paused.options);
 };

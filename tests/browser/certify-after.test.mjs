@@ -1,0 +1,90 @@
+// The certificate off the critical path (issue 37): the worker posts a solve's mesh first and
+// certifies after, in slices, and a newer edit drops the report of an older one. In the page,
+// an edit of the aeroplane is drawn before its join report, the Joins folder says
+// "checking…" meanwhile, then shows the edited model's report. At 1280×800 and 390×844.
+// Screenshots: build/browser/certify-after-*.png.
+//   PDESURF_WASM_DIR=build/wasm node --test tests/browser/certify-after.test.mjs
+import { describe, it, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { skip, startHarness, hooks, solvedAfter, shoot, REPO } from './harness.mjs';
+
+const plane = JSON.parse(fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig8d.json'), 'utf8'));
+
+async function openFolder(page, name) {
+  const folder = page.locator(`#panel .lil-gui .title`, { hasText: name }).first();
+  await folder.scrollIntoViewIfNeeded();
+  await folder.click();
+}
+
+describe('certified after drawing', { skip }, () => {
+  let h;
+  before(async () => {
+    h = await startHarness();
+  });
+  after(async () => {
+    await h?.close();
+  });
+
+  it('the worker: meshes first, each without its report; two solves queued: only the newer one is certified', async () => {
+    const page = await h.open('/web/#example=you2004-fig4a');
+    const a = structuredClone(plane), b = structuredClone(plane);
+    b.parameters.wing_x.value += 0.05;
+    const messages = await page.evaluate(async ([sa, sb]) => {
+      const worker = new Worker('/web/solver/solver-worker.js', { type: 'module' });
+      const got = [];
+      const done = new Promise((resolve) => {
+        worker.onmessage = (e) => {
+          const { id, kind, ok, result, error } = e.data;
+          if (kind === 'ahead') return;
+          got.push({ id, kind, ok, error, pending: Boolean(result?.reportPending), report: kind === 'report' && result ? { ok: result.ok, joins: result.joins.length, bodies: result.bodies.length } : null, at: performance.now() });
+          if (kind === 'report') setTimeout(() => resolve(got), 1500); // anything after it would show here
+        };
+      });
+      const options = { nu: 64, nv: 64, curvature: false, joins: true, crossings: false };
+      worker.postMessage({ id: 1, scene: sa, options });
+      worker.postMessage({ id: 2, scene: sb, options });
+      const out = await done;
+      worker.terminate();
+      return out;
+    }, [JSON.stringify(a), JSON.stringify(b)]);
+    const kinds = messages.map((m) => `${m.kind} ${m.id}`);
+    assert.deepEqual(kinds, ['solve 1', 'solve 2', 'report 2'], JSON.stringify(messages));
+    assert.ok(messages[0].ok && messages[0].pending && messages[1].pending, 'a mesh came with its report');
+    assert.deepEqual(messages[2].report, { ok: true, joins: 27, bodies: 1 });
+    await page.close();
+  });
+
+  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+    it(`${viewport.width}×${viewport.height}: an edit of the aeroplane is drawn before its report; the Joins folder says "checking…", then shows it`, async () => {
+      const page = await h.open('/web/#example=you2004-fig8d', { viewport });
+      assert.equal((await hooks(page)).lastError, null);
+      if (viewport.width < 600) await page.locator('#toolbar [data-action="panel"]').click();
+      await openFolder(page, 'Joins');
+      await page.waitForFunction(() => window.__pdesurf.analysis().report?.crossingsChecked === true && !window.__pdesurf.analysis().reportStale, null, { timeout: 30_000 });
+      const before = await page.evaluate(() => window.__pdesurf.analysis().checkingShown);
+      const n = (await hooks(page)).solveCount;
+      const field = page.locator('#panel [data-param="wing_x"] input');
+      await field.scrollIntoViewIfNeeded();
+      await field.fill('0.1');
+      await field.press('Enter');
+      await solvedAfter(page, n);
+      await page.waitForFunction((count) => window.__pdesurf.lastReport?.solveCount === window.__pdesurf.solveCount && window.__pdesurf.solveCount > count, n, { timeout: 30_000 });
+      const t = await page.evaluate(() => ({ drawnAt: window.__pdesurf.lastDrawnAt, solve: window.__pdesurf.lastSolve, report: window.__pdesurf.lastReport, a: window.__pdesurf.analysis() }));
+      console.log(`# aeroplane wing_x (${viewport.width}): drawn ${t.solve.pageMs.toFixed(0)} ms after the edit (worker ${t.solve.workerMs.toFixed(0)} ms), ` +
+        `certified ${(t.report.at - t.report.requestedAt).toFixed(0)} ms after it (worker ${t.report.ms.toFixed(0)} ms)`);
+      assert.ok(t.report.at > t.drawnAt, 'the report came before the surface was drawn');
+      assert.ok(t.a.checkingShown > before, 'the Joins folder never said "checking…"');
+      assert.equal(t.a.reportStale, false);
+      assert.equal(t.a.joinsTitle, 'Joins');
+      assert.equal(t.a.report.joins.length, 27);
+      assert.ok(t.a.report.joins.every((j) => j.ok), JSON.stringify(t.a.report.joins.filter((j) => !j.ok)));
+      assert.equal(t.a.report.crossingsChecked, true);
+      assert.equal(await page.locator('#panel [data-join][data-verdict="ok"]').count(), 27);
+      await page.locator('#panel [data-join]').first().scrollIntoViewIfNeeded();
+      await shoot(page, `certify-after-${viewport.width}.png`);
+      await page.close();
+    });
+  }
+});
