@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <unsupported/Eigen/FFT>
 
 #include "basis/general_function.hpp"
 #include "common/errors.hpp"
@@ -40,17 +41,19 @@ VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, doubl
   }
   for (int j = 0; j <= K; ++j)
     if (!std::isfinite(samples[j])) requireFinite(f, vs[j]);
-  // a_k - i b_k = (2/K) Σ_j w_j f_j e^{-ikωv_j}: powers of e^{iωv_j} instead of 2N trig calls per sample.
+  // a_k + i b_k = Σ_j w_j f_j e^{ikωv_j} (trapezoid weights) by one FFT: the ends are one
+  // point of the period (e^{ikωv_K} = e^{ikωv_0}), so the sum is e^{ikωv_0} times the
+  // conjugate of the K-point DFT of f_0' = (f_0 + f_K)/2, f_1, …, f_{K-1}: O(K log K), where
+  // the sum mode by mode was O(K N) (a root blend's modal:64 spent a quarter of its solve there).
+  std::vector<double> periodSamples(samples.begin(), samples.end() - 1);
+  periodSamples[0] = 0.5 * (samples[0] + samples[K]);
+  std::vector<std::complex<double>> spectrum;
+  Eigen::FFT<double> fft;
+  fft.fwd(spectrum, periodSamples);
   std::vector<double> a(N + 1, 0.0), b(N + 1, 0.0);
-  for (int j = 0; j <= K; ++j) {
-    const double v = v0 + L * j / K, weight = ((j == 0 || j == K) ? 0.5 : 1.0) * samples[j];
-    const std::complex<double> z(std::cos(omega * v), std::sin(omega * v));
-    std::complex<double> zk = 1.0;
-    for (int k = 0; k <= N; ++k) {
-      a[k] += weight * zk.real();
-      b[k] += weight * zk.imag();
-      zk *= z;
-    }
+  for (int k = 0; k <= N; ++k) {
+    const std::complex<double> c = std::polar(1.0, k * omega * v0) * std::conj(spectrum[size_t(k)]);
+    a[k] = c.real(), b[k] = c.imag();
   }
   // Modes at the rounding level of the sums are noise, and the k-th mode's noise enters the
   // surface's v-derivatives (normals, curvature, the PDE's ∂v^2n) times (kω)^j: leave them out.
