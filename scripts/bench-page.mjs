@@ -28,6 +28,25 @@ async function pagePath(page, n, runs = n > 512 ? 5 : 9) {
   return { page: median(out.map((s) => s.pageMs)), worker: median(out.map((s) => s.workerMs)) };
 }
 
+// An aeroplane slider stepped as a user does (the field, Enter), with the options the page
+// sends (the join report with every solve): edit to drawn (page path), the worker's solve,
+// and edit to certified (the report measured after the mesh was posted).
+async function modelEdit(page, param, runs = 7) {
+  const input = page.locator(`#panel [data-param="${param}"] input`).first();
+  await input.scrollIntoViewIfNeeded();
+  const base = Number(await input.inputValue());
+  const out = [];
+  for (let k = 0; k < runs; k++) {
+    const before = await page.evaluate(() => window.__pdesurf.solveCount);
+    await input.fill(String(base + 0.01 * ((k % 2) + 1)));
+    await input.press('Enter');
+    await page.waitForFunction((c) => window.__pdesurf.solveCount > c && window.__pdesurf.lastReport?.solveCount === window.__pdesurf.solveCount, before, { timeout: 60_000 });
+    out.push(await page.evaluate(() => ({ ...window.__pdesurf.lastSolve, certifiedMs: window.__pdesurf.lastReport.at - window.__pdesurf.lastReport.requestedAt, reportMs: window.__pdesurf.lastReport.ms })));
+  }
+  const m = (key) => median(out.map((s) => s[key]));
+  return { page: m('pageMs'), worker: m('workerMs'), certified: m('certifiedMs'), report: m('reportMs') };
+}
+
 const h = await startHarness();
 try {
   const bare = [];
@@ -48,6 +67,17 @@ try {
   for (const n of [64, 256, 1024]) {
     const r = await pagePath(page, n);
     console.log(`${`${n}x${n}`.padEnd(10)} ${r.page.toFixed(1).padStart(10)} ${r.worker.toFixed(1).padStart(10)} ${(r.page / r.worker).toFixed(2).padStart(8)}`);
+  }
+  const cold = [];
+  for (let k = 0; k < 5; k++) cold.push(await firstVisit(`${h.base}/app/#example=you2004-fig8d`, () => window.__pdesurf?.firstFrameAt));
+  console.log(`\nthe aeroplane (you2004-fig8d, 22 patches) cold: first frame ${median(cold.map((r) => r.frameMs)).toFixed(0)} ms (${ms(cold)}), ${(median(cold.map((r) => r.frameMs)) / b).toFixed(2)}× the bare page`);
+  const plane = await h.open('/app/#example=you2004-fig8d');
+  await plane.waitForFunction(() => window.__pdesurf.lastReport, null, { timeout: 60_000 });
+  console.log('its sliders, edit to drawn and to certified (the report after the mesh) [ms, median of 7, 64²]');
+  console.log(`${'slider'.padEnd(10)} ${'drawn'.padStart(8)} ${'worker'.padStart(8)} ${'ratio'.padStart(6)} ${'certified'.padStart(10)} ${'report'.padStart(8)}`);
+  for (const param of ['wing_x', 'span', 'tip_lift', 'h', 'R']) {
+    const r = await modelEdit(plane, param);
+    console.log(`${param.padEnd(10)} ${r.page.toFixed(0).padStart(8)} ${r.worker.toFixed(0).padStart(8)} ${(r.page / r.worker).toFixed(2).padStart(6)} ${r.certified.toFixed(0).padStart(10)} ${r.report.toFixed(0).padStart(8)}`);
   }
   const fillet = await h.open('/app/#example=ref-sphere-fillet');
   // The same view orbited (renders only) is the baseline: under a software GL the frame's
