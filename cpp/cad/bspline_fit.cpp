@@ -59,8 +59,29 @@ struct LeastSquares {
   std::vector<double> uResidual, vResidual;  // each span's largest 1D residual
 };
 
+// What the least squares reads of S on the grid: its positions, S_u along the u-ends and S_v
+// along the v-ends (not the whole grid's derivatives: the certificate tabulates those by blocks).
+struct FitData {
+  std::array<Eigen::MatrixXd, 3> X;       // u rows × v columns
+  std::array<Eigen::MatrixXd, 3> XuEnds;  // 2 × v: at u0 and u1
+  std::array<Eigen::MatrixXd, 3> XvEnds;  // u × 2: at v0 and v1
+};
+
+FitData fitData(const SeparableSurface& s, const SurfaceOnGrid& surface, const CertificateGrid& grid) {
+  FitData d;
+  const GridPartials positions = surface.at(grid.v, 1);
+  const GridPartials alongV = SurfaceOnGrid(s, {grid.u.front(), grid.u.back()}).at(grid.v, 2);
+  const GridPartials alongU = surface.at({grid.v.front(), grid.v.back()}, 3);
+  for (int c = 0; c < 3; ++c) {
+    d.X[size_t(c)] = positions[0][size_t(c)];
+    d.XuEnds[size_t(c)] = alongV[1][size_t(c)];
+    d.XvEnds[size_t(c)] = alongU[2][size_t(c)];
+  }
+  return d;
+}
+
 LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, const SpanSet& V, const CertificateGrid& grid,
-                          const GridPartials& S, const Shape& f) {
+                          const FitData& S, const Shape& f) {
   const int q = p, nsu = U.count(), nsv = V.count();
   const std::vector<bool>& vCrease = V.crease;
   LeastSquares out;
@@ -124,15 +145,15 @@ LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, co
       for (int b2 = 0; b2 < 2; ++b2) twist[a][b2] = evalPoint(s, a ? s.u1 : s.u0, b2 ? s.v1 : s.v0, 1, 1);
   std::array<Eigen::MatrixXd, 3> net;
   for (int c = 0; c < 3; ++c) {
-    const Eigen::MatrixXd& X = S[0][size_t(c)];
-    const Eigen::MatrixXd& Xu = S[1][size_t(c)];
-    const Eigen::MatrixXd& Xv = S[2][size_t(c)];
-    const Eigen::Index last = X.rows() - 1, lastV = X.cols() - 1;
-    const Eigen::MatrixXd cu = fitU(X, Xu.row(0), Xu.row(last));  // u-poles, v samples
+    const Eigen::MatrixXd& X = S.X[size_t(c)];
+    const Eigen::MatrixXd& Xu = S.XuEnds[size_t(c)];
+    const Eigen::MatrixXd& Xv = S.XvEnds[size_t(c)];
+    const Eigen::Index lastV = X.cols() - 1;
+    const Eigen::MatrixXd cu = fitU(X, Xu.row(0), Xu.row(1));  // u-poles, v samples
     if (hermiteV) {
       Eigen::MatrixXd d0(1, 1), d1(1, 1), e0(1, 1), e1(1, 1);
       d0(0, 0) = twist[0][0][c], d1(0, 0) = twist[1][0][c], e0(0, 0) = twist[0][1][c], e1(0, 0) = twist[1][1][c];
-      const Eigen::MatrixXd sv0 = fitU(Xv.col(0), d0, d1), sv1 = fitU(Xv.col(lastV), e0, e1);
+      const Eigen::MatrixXd sv0 = fitU(Xv.col(0), d0, d1), sv1 = fitU(Xv.col(1), e0, e1);
       Eigen::MatrixXd fixedV(n, 4);
       fixedV << cu.col(0), cu.col(0) + startStepV * sv0, cu.col(lastV) - endStepV * sv1, cu.col(lastV);
       Eigen::MatrixXd poles(n, m);
@@ -180,10 +201,10 @@ LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, co
   // A border of S that is one point (a fill's centre) stays one point in B.
   for (int side = 0; side < 2; ++side) {
     const Eigen::Index row = side ? Eigen::Index(grid.u.size()) - 1 : 0;
-    Eigen::Vector3d first(S[0][0](row, 0), S[0][1](row, 0), S[0][2](row, 0));
+    Eigen::Vector3d first(S.X[0](row, 0), S.X[1](row, 0), S.X[2](row, 0));
     double spread = 0;
     for (Eigen::Index j = 0; j < Eigen::Index(grid.v.size()); ++j)
-      spread = std::max(spread, (Eigen::Vector3d(S[0][0](row, j), S[0][1](row, j), S[0][2](row, j)) - first).norm());
+      spread = std::max(spread, (Eigen::Vector3d(S.X[0](row, j), S.X[1](row, j), S.X[2](row, j)) - first).norm());
     if (spread <= 1e-12 * f.scale) {
       b.degenerate[side] = true;
       for (int j = 0; j < b.countV; ++j) b.pole(side ? b.countU - 1 : 0, j) = first;
@@ -247,14 +268,14 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
                       " (limits: " + std::to_string(kFitMaxSpans) + " spans per direction, " + std::to_string(kFitMaxGridPoints) +
                       " certificate points, " + std::to_string(kFitMaxIterations) + " refinements)");
     }
-    GridPartials S = tabulateSurface(s, grid.u, grid.v);
+    const SurfaceOnGrid surface(s, grid.u);
     if (spansChanged) {
-      fit = leastSquares(s, o.degree, U, V, grid, S, shape);
+      fit = leastSquares(s, o.degree, U, V, grid, fitData(s, surface, grid), shape);
       boundB = splineFourthBounds(fit.surface);
     }
     const BSplineSurface& b = fit.surface;
     const FourthBounds boundS = boundFourth(s, U.breaks, V.breaks, &boundCache);
-    const Certificate cert = certify(grid, std::move(S), b, boundS, boundB, rep.scale);
+    const Certificate cert = certify(grid, surface, b, boundS, boundB, o.tolerance, o.normalToleranceDeg);
     const bool normalsMet = cert.normalDeg <= o.normalToleranceDeg;
     // Best so far: within the tolerance with the smallest normal deviation, else the smallest bound.
     const bool better = cert.bound <= o.tolerance

@@ -87,37 +87,35 @@ RefinePlan planRefinement(const RefineInput& in) {
   std::vector<int> finerU(size_t(nsu), 1), finerV(size_t(nsv), 1);
   const Certificate& cert = *in.cert;
   const CertificateGrid& grid = *in.grid;
-  for (Eigen::Index i = 0; i < cert.cell.rows(); ++i)
-    for (Eigen::Index j = 0; j < cert.cell.cols(); ++j) {
-      const bool normalMissed = !(cert.cellNormalDeg(i, j) <= in.normalToleranceDeg);
-      if (cert.cell(i, j) <= tol && !normalMissed) continue;
-      const int su = grid.uSpan[size_t(i)], sv = grid.vSpan[size_t(j)];
-      int& pu = plan.piecesU[size_t(su)];
-      int& pv = plan.piecesV[size_t(sv)];
-      if (normalMissed) {
-        // A border's normal is B_u × B_v there, and both are v-fits (the u-ends are Hermite:
-        // B_u is the v-fit of S_u, B_v the derivative of the v-fit of S): the v-spans decide
-        // it. A span's position error e shows in B_v as about e / h, and least squares spreads
-        // e from the neighbours into a span halved alone: halve its neighbours with it.
-        for (int d = -kNormalSpread; d <= kNormalSpread; ++d) {
-          const int k = in.periodicV ? ((sv + d) % nsv + nsv) % nsv : std::clamp(sv + d, 0, nsv - 1);
-          plan.piecesV[size_t(k)] = std::max(plan.piecesV[size_t(k)], 2);
-        }
-      } else if (pu > 1 || pv > 1) {
-        continue;  // cut anyway where its own direction's residual says so
-      } else if (!(cert.cellSampled(i, j) <= tol / 2)) {
-        pu = pv = 2;
-      } else {
-        // The samples are close and the bound's slack is the cause: finer cells in the
-        // direction whose terms dominate it, as many times as the budget the other direction
-        // leaves needs (finer in both at once multiplies the grid's points by both).
-        const double su2 = cert.cellSlackU(i, j), sv2 = cert.cellSlackV(i, j);
-        const double budget = 0.9 * tol - cert.cellSampled(i, j);
-        const double left = std::max(budget - std::min(su2, sv2), budget / 2);
-        int& finer = su2 >= sv2 ? finerU[size_t(su)] : finerV[size_t(sv)];
-        finer = std::max({finer, 2, cellFactor(std::max(su2, sv2), left)});
+  for (const FailedCell& f : cert.failed) {
+    const bool normalMissed = !(f.normalDeg <= in.normalToleranceDeg);
+    if (f.bound <= tol && !normalMissed) continue;
+    const int su = grid.uSpan[size_t(f.i)], sv = grid.vSpan[size_t(f.j)];
+    int& pu = plan.piecesU[size_t(su)];
+    int& pv = plan.piecesV[size_t(sv)];
+    if (normalMissed) {
+      // A border's normal is B_u × B_v there, and both are v-fits (the u-ends are Hermite:
+      // B_u is the v-fit of S_u, B_v the derivative of the v-fit of S): the v-spans decide
+      // it. A span's position error e shows in B_v as about e / h, and least squares spreads
+      // e from the neighbours into a span halved alone: halve its neighbours with it.
+      for (int d = -kNormalSpread; d <= kNormalSpread; ++d) {
+        const int k = in.periodicV ? ((sv + d) % nsv + nsv) % nsv : std::clamp(sv + d, 0, nsv - 1);
+        plan.piecesV[size_t(k)] = std::max(plan.piecesV[size_t(k)], 2);
       }
+    } else if (pu > 1 || pv > 1) {
+      continue;  // cut anyway where its own direction's residual says so
+    } else if (!(f.sampled <= tol / 2)) {
+      pu = pv = 2;
+    } else {
+      // The samples are close and the bound's slack is the cause: finer cells in the
+      // direction whose terms dominate it, as many times as the budget the other direction
+      // leaves needs (finer in both at once multiplies the grid's points by both).
+      const double budget = 0.9 * tol - f.sampled;
+      const double left = std::max(budget - std::min(f.slackU, f.slackV), budget / 2);
+      int& finer = f.slackU >= f.slackV ? finerU[size_t(su)] : finerV[size_t(sv)];
+      finer = std::max({finer, 2, cellFactor(std::max(f.slackU, f.slackV), left)});
     }
+  }
   // Finer cells shrink the bound's h² terms, but S's fourth-derivative bound stays the whole
   // span's: past kMaxCellsPerSpan a span is halved instead, so the bound becomes the halves'
   // own (a fill's boundary layer bounded over its first span had the cells of a span near its

@@ -10,32 +10,46 @@
 
 namespace pdesurf {
 
-GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v) {
-  const Eigen::Index mu = Eigen::Index(u.size()), mv = Eigen::Index(v.size());
-  GridPartials out;
-  static const char* axis[3] = {"x", "y", "z"};
-  std::map<const void*, std::vector<std::vector<double>>> generalRows;
+SurfaceOnGrid::SurfaceOnGrid(const SeparableSurface& s, std::vector<double> u) : s_(s), u_(std::move(u)) {
+  const Eigen::Index mu = Eigen::Index(u_.size());
+  std::vector<double> tab(size_t(mu) * 3);
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[size_t(c)];
     const Eigen::Index T = Eigen::Index(terms.size());
-    std::array<Eigen::MatrixXd, 3> G, g;
-    for (auto& m : G) m.resize(mu, T);
-    for (auto& m : g) m.resize(mv, T);
-    std::vector<double> tab(size_t(mu) * 3);
+    for (auto& m : G_[size_t(c)]) m.resize(mu, T);
     for (Eigen::Index t = 0; t < T; ++t) {
-      terms[size_t(t)].G.tabulate(u.data(), int(mu), 2, tab.data());
+      terms[size_t(t)].G.tabulate(u_.data(), int(mu), 2, tab.data());
       for (int a = 0; a < 3; ++a)
-        for (Eigen::Index i = 0; i < mu; ++i) G[size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
+        for (Eigen::Index i = 0; i < mu; ++i) G_[size_t(c)][size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
+      const VFunction& f = terms[size_t(t)].g;
+      if (f.family == Family::General && !programs_.count(f.general.get()))
+        programs_.emplace(f.general.get(), std::make_shared<const ExprProgram>(std::vector<Expr>{
+                                               f.general->derivativeExpr(0), f.general->derivativeExpr(1), f.general->derivativeExpr(2)}));
+    }
+    // X, X_u, X_v, X_uu, X_uv, X_vv of the pointwise part: one program, run along each row.
+    if (const Expr& p = s.pointwise[size_t(c)]) pointwise_[size_t(c)] = std::make_shared<const ExprProgram>(partialDerivatives(p, true));
+  }
+}
+
+GridPartials SurfaceOnGrid::at(const std::vector<double>& v, int count) const {
+  static const char* axis[3] = {"x", "y", "z"};
+  const Eigen::Index mu = Eigen::Index(u_.size()), mv = Eigen::Index(v.size());
+  GridPartials out;
+  std::map<const void*, std::vector<std::vector<double>>> generalRows;
+  for (int c = 0; c < 3; ++c) {
+    const auto& terms = s_.component[size_t(c)];
+    const Eigen::Index T = Eigen::Index(terms.size());
+    std::array<Eigen::MatrixXd, 3> g;
+    for (auto& m : g) m.resize(mv, T);
+    for (Eigen::Index t = 0; t < T; ++t) {
       const VFunction& f = terms[size_t(t)].g;
       if (f.family == Family::General) {
         // g, g', g'' over every v at once: one compiled program per general function.
         auto& rows = generalRows[f.general.get()];
         if (rows.empty()) {
           rows.assign(3, std::vector<double>(size_t(mv)));
-          const ExprProgram program(std::vector<Expr>{f.general->derivativeExpr(0), f.general->derivativeExpr(1),
-                                                      f.general->derivativeExpr(2)});
           double* outs[3] = {rows[0].data(), rows[1].data(), rows[2].data()};
-          program.runAll(v.data(), nullptr, size_t(mv), outs);
+          programs_.at(f.general.get())->runAll(v.data(), nullptr, size_t(mv), outs);
         }
         for (int b = 0; b < 3; ++b)
           for (Eigen::Index j = 0; j < mv; ++j) g[size_t(b)](j, t) = rows[size_t(b)][size_t(j)];
@@ -44,31 +58,33 @@ GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double
           for (int b = 0; b < 3; ++b) g[size_t(b)](j, t) = f.eval(v[size_t(j)], b);
       }
     }
-    for (int k = 0; k < 5; ++k) {
+    for (int k = 0; k < count; ++k) {
       Eigen::MatrixXd& m = out[size_t(k)][size_t(c)];
-      m = T ? Eigen::MatrixXd(G[size_t(kFitPartials[k][0])] * g[size_t(kFitPartials[k][1])].transpose())
+      m = T ? Eigen::MatrixXd(G_[size_t(c)][size_t(kFitPartials[k][0])] * g[size_t(kFitPartials[k][1])].transpose())
             : Eigen::MatrixXd::Zero(mu, mv);
     }
-    if (const Expr& p = s.pointwise[size_t(c)]) {
-      // X, X_u, X_v, X_uu, X_uv, X_vv: one program, run along each grid row.
-      const std::vector<Expr> partials = partialDerivatives(p, true);
-      const ExprProgram program(partials);
+    if (pointwise_[size_t(c)]) {
       static const int slot[5] = {0, 1, 2, 3, 5};
       std::vector<std::vector<double>> rows(6, std::vector<double>(size_t(mv)));
       std::vector<double> uRow(static_cast<size_t>(mv));
       double* outs[6];
       for (int r = 0; r < 6; ++r) outs[r] = rows[size_t(r)].data();
       for (Eigen::Index i = 0; i < mu; ++i) {
-        std::fill(uRow.begin(), uRow.end(), u[size_t(i)]);
-        program.runAll(v.data(), uRow.data(), size_t(mv), outs);
-        for (int k = 0; k < 5; ++k)
+        std::fill(uRow.begin(), uRow.end(), u_[size_t(i)]);
+        pointwise_[size_t(c)]->runAll(v.data(), uRow.data(), size_t(mv), outs);
+        for (int k = 0; k < count; ++k)
           for (Eigen::Index j = 0; j < mv; ++j) out[size_t(k)][size_t(c)](i, j) += rows[size_t(slot[k])][size_t(j)];
       }
     }
-    if (!out[0][size_t(c)].allFinite() || !out[3][size_t(c)].allFinite() || !out[4][size_t(c)].allFinite())
-      throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + " is not finite on the fit's grid");
+    for (int k = 0; k < count; ++k)
+      if (!out[size_t(k)][size_t(c)].allFinite())
+        throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + " is not finite on the fit's grid");
   }
   return out;
+}
+
+GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v) {
+  return SurfaceOnGrid(s, u).at(v);
 }
 
 namespace {
@@ -86,7 +102,11 @@ void splinePartials(const BSplineSurface& b, const std::vector<double>& u, const
     Eigen::MatrixXd net(b.countU, b.countV);
     for (int i = 0; i < b.countU; ++i)
       for (int j = 0; j < b.countV; ++j) net(i, j) = b.pole(i, j)[c];
-    for (int k = 0; k < 5; ++k) use(k, c, Eigen::MatrixXd((nu[size_t(kFitPartials[k][0])] * net) * nvT[size_t(kFitPartials[k][1])]));
+    // nu (net nvT): the v-side first, so a block of few columns costs few products.
+    for (int k = 0; k < 5; ++k) {
+      const Eigen::MatrixXd netV = net * nvT[size_t(kFitPartials[k][1])];
+      use(k, c, Eigen::MatrixXd(nu[size_t(kFitPartials[k][0])] * netV));
+    }
   }
 }
 

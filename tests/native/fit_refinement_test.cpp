@@ -20,10 +20,11 @@ struct Case {
   Case(int nu, int nv, int cells) : u(initialSpans(0, 1, nu, cells, {})), v(initialSpans(0, 1, nv, cells, {})) {
     certificateLine(u, &grid.u, &grid.uSpan);
     certificateLine(v, &grid.v, &grid.vSpan);
-    const Eigen::Index cu = Eigen::Index(grid.u.size()) - 1, cv = Eigen::Index(grid.v.size()) - 1;
-    for (Eigen::MatrixXd* m : {&cert.cell, &cert.cellSampled, &cert.cellNormalDeg, &cert.cellSlackU, &cert.cellSlackV})
-      *m = Eigen::MatrixXd::Zero(cu, cv);
     ru.assign(size_t(nu), 0.0), rv.assign(size_t(nv), 0.0);
+  }
+  FailedCell& fail(Eigen::Index i, Eigen::Index j) {
+    cert.failed.push_back({i, j, 0, 0, 0, 0, 0});
+    return cert.failed.back();
   }
   RefinePlan plan(double tol) { return planRefinement({&u, &v, &grid, &cert, &ru, &rv, tol, 0.01, 5, false}); }
 };
@@ -52,15 +53,15 @@ TEST_CASE("fit refinement: a cell whose samples pass and whose bound fails gets 
   Case c(2, 2, 4);
   const double tol = 1e-6;
   // Cell (1, 5): in u-span 0 and v-span 1; slack mostly u: 9× the budget the v part leaves.
-  c.cert.cell(1, 5) = 2e-6, c.cert.cellSampled(1, 5) = 0.1e-6;
-  c.cert.cellSlackV(1, 5) = 0.1e-6;
-  c.cert.cellSlackU(1, 5) = 9 * (0.9e-6 - 0.1e-6 - 0.1e-6);
+  FailedCell& f = c.fail(1, 5);
+  f.bound = 2e-6, f.sampled = 0.1e-6, f.slackV = 0.1e-6, f.slackU = 9 * (0.9e-6 - 0.1e-6 - 0.1e-6);
   const RefinePlan p = c.plan(tol);
   CHECK_FALSE(p.splitsSpans());
   CHECK(p.cutsU == std::vector<int>{12, 4});  // sqrt(9) = 3 times the cells, in that span only
   CHECK(p.cutsV == std::vector<int>{4, 4});
   // A cell whose samples miss half the tolerance: both its spans halved, cells kept.
-  c.cert.cellSampled(6, 2) = 0.6e-6, c.cert.cell(6, 2) = 0.7e-6 + 1e-6;
+  FailedCell& g = c.fail(6, 2);
+  g.sampled = 0.6e-6, g.bound = 0.7e-6 + 1e-6;
   const RefinePlan q = c.plan(tol);
   CHECK(q.piecesU == std::vector<int>{1, 2});
   CHECK(q.piecesV == std::vector<int>{2, 1});
@@ -69,14 +70,16 @@ TEST_CASE("fit refinement: a cell whose samples pass and whose bound fails gets 
 TEST_CASE("fit refinement: past 64 cells a span is halved; past the grid's limit finer cells become cut spans") {
   Case c(2, 2, 64);
   const double tol = 1e-6;
-  c.cert.cell(3, 3) = 2e-6, c.cert.cellSampled(3, 3) = 0.1e-6, c.cert.cellSlackU(3, 3) = 4e-6;
+  FailedCell& f = c.fail(3, 3);
+  f.bound = 2e-6, f.sampled = 0.1e-6, f.slackU = 4e-6;
   RefinePlan p = c.plan(tol);
   CHECK(p.piecesU == std::vector<int>{2, 1});
   CHECK(p.cutsU[0] == 64);
   // 8 × 512 spans of 64 cells: finer cells in u would pass the 2^20 points; the span is halved
   // with half its cells instead (as many points, the halves' own bounds).
   Case big(8, 16, 32);
-  big.cert.cell(3, 3) = 2e-6, big.cert.cellSampled(3, 3) = 0.1e-6, big.cert.cellSlackU(3, 3) = 1e-6;
+  FailedCell& b = big.fail(3, 3);
+  b.bound = 2e-6, b.sampled = 0.1e-6, b.slackU = 1e-6;
   const long before = long(big.grid.u.size()) * long(big.grid.v.size());
   REQUIRE(before * 2 > kFitMaxGridPoints / 4);
   big.v = initialSpans(0, 1, 512, 64, {});
