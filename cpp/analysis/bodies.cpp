@@ -32,8 +32,10 @@ std::vector<double> uniform(double a, double b, int n) {
   return out;
 }
 
+}  // namespace
+
 // Area and (1/3) ∫ X · (X_u × X_v) of one solved surface, tabulated at the Gauss nodes.
-void integrate(const SeparableSurface& s, double* area, double* volume) {
+FaceMeasure faceMeasure(const SeparableSurface& s) {
   std::vector<double> ub = uniform(s.u0, s.u1, kCellsU), vb = uniform(s.v0, s.v1, kCellsV);
   for (double f : {1.0 / 256, 1.0 / 128, 1.0 / 64, 1.0 / 32}) ub.push_back(s.u0 + (s.u1 - s.u0) * f);  // towards u0
   for (double c : findCreases(s)) vb.push_back(c);
@@ -52,12 +54,10 @@ void integrate(const SeparableSurface& s, double* area, double* volume) {
       v += uw[i] * vw[size_t(j)] * vec(0).dot(n);
     }
   });
-  *area = a, *volume = v / 3;
+  return {a, v / 3};
 }
 
-}  // namespace
-
-SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize) {
+SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize, const std::vector<FaceMeasure>* measures) {
   const double tol = kJoinTolerance * sceneSize;
   std::vector<TopologyFace> faces;
   for (const SolvedPatch& sp : solved) {
@@ -82,7 +82,8 @@ SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sce
       }
       f.degenerate[b] = spread <= tol;
     }
-    integrate(s, &f.area, &f.signedVolume);
+    const FaceMeasure m = measures ? (*measures)[faces.size()] : faceMeasure(s);
+    f.area = m.area, f.signedVolume = m.signedVolume;
     faces.push_back(std::move(f));
   }
   SolvedTopology out{std::move(faces), borderJoins(solved), {}};
@@ -90,8 +91,8 @@ SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sce
   return out;
 }
 
-std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize) {
-  const SolvedTopology st = solvedTopology(solved, sceneSize);
+std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize, const std::vector<FaceMeasure>* measures) {
+  const SolvedTopology st = solvedTopology(solved, sceneSize, measures);
   const BrepTopology& t = st.topology;
   std::vector<Body> out;
   for (const BrepShell& sh : t.shells) {

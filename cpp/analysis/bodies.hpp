@@ -23,7 +23,13 @@ struct Body {
 // sceneSize: the scene's diagonal (join_certificate's sceneSizeOf): borders are one edge where
 // they are within 1e-8 of it. Area and volume: Gauss-Legendre, 4 points a cell, cells cut at the
 // surfaces' creases (a fill's corners) and graded towards u = 0 (a lift's decay).
-std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize);
+// measures: each patch's faceMeasure when known (a report session keeps them per surface).
+struct FaceMeasure {
+  double area = 0, signedVolume = 0;  // ∫ |X_u × X_v|, (1/3) ∫ X · (X_u × X_v)
+};
+FaceMeasure faceMeasure(const SeparableSurface& s);
+std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize,
+                                const std::vector<FaceMeasure>* measures = nullptr);
 
 // What measureBodies builds on, for others that follow the bodies (analysis/watertight_mesh):
 // the solved patches as faces (their eval refers to `solved`, which must outlive them), the
@@ -33,6 +39,7 @@ struct SolvedTopology {
   std::vector<BorderJoin> joins;
   BrepTopology topology;
 };
-SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize);
+SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize,
+                              const std::vector<FaceMeasure>* measures = nullptr);
 
 }  // namespace pdesurf

@@ -42,6 +42,9 @@ void ReportSession::begin(const Scene& scene, const std::vector<SolvedPatch>& so
   for (size_t i = 0; i < solved.size(); ++i) parts_.push_back({Kind::Seam, i, 0});
   for (size_t i = 0; i < solved.size(); ++i)
     if (solved[i].patch->fill.given) parts_.push_back({Kind::Centre, i, 0});
+  // The bodies in pieces: each face's integrals (its own surface's), then the topology.
+  faces_.assign(solved.size(), FaceMeasure{});
+  for (size_t i = 0; i < solved.size(); ++i) parts_.push_back({Kind::Face, i, 0});
   parts_.push_back({Kind::Bodies, 0, 0});
   if (crossingGrid > 0) parts_.push_back({Kind::Crossings, 0, 0});
   // Forget what no part of this scene can use.
@@ -59,6 +62,7 @@ std::string ReportSession::nameOf(const Part& p) const {
     case Kind::Join: return "join " + s[p.patch].patch->name + "#" + std::to_string(p.meets);
     case Kind::Seam: return "seam " + s[p.patch].patch->name;
     case Kind::Centre: return "centre " + s[p.patch].patch->name;
+    case Kind::Face: return "face " + s[p.patch].patch->name;
     case Kind::Bodies: return "bodies";
     case Kind::Crossings: return "crossings";
   }
@@ -82,9 +86,15 @@ ReportSession::Key ReportSession::keyOf(const Part& p) const {
       break;
     }
     case Kind::Seam:
-    case Kind::Centre:
       k.versions = {current_[p.patch]};
       k.identity = s[p.patch].patch->name;
+      break;
+    case Kind::Centre:
+    case Kind::Face:
+      // Of the surface alone: not relative to the scene's size (most edits change it).
+      k.versions = {current_[p.patch]};
+      k.identity = s[p.patch].patch->name;
+      k.size = 0;
       break;
     case Kind::Bodies:
     case Kind::Crossings:
@@ -120,7 +130,8 @@ bool ReportSession::step() {
         if (auto r = certifySeam(s[p.patch], report_.sceneSize)) k.join = *r, k.seam = true;
         break;
       case Kind::Centre: k.centre = measureFillCentre(s[p.patch].patch->name, s[p.patch].surface); break;
-      case Kind::Bodies: k.bodies = measureBodies(s, report_.sceneSize); break;
+      case Kind::Face: k.face = faceMeasure(s[p.patch].surface); break;
+      case Kind::Bodies: k.bodies = measureBodies(s, report_.sceneSize, &faces_); break;
       case Kind::Crossings: k.crossings = findCrossings(s, report_.sceneSize, crossingGrid_); break;
     }
     kept_parts_[name] = k;
@@ -145,6 +156,7 @@ void ReportSession::place(const Part& p, const Kept& k) {
       if (k.seam) report_.seams.push_back(k.join);
       break;
     case Kind::Centre: report_.centres.push_back(k.centre); break;
+    case Kind::Face: faces_[p.patch] = k.face; break;
     case Kind::Bodies: bodies_ = k.bodies; break;
     case Kind::Crossings: report_.crossings = k.crossings; break;
   }

@@ -31,10 +31,10 @@ class ReportSession {
   const std::vector<Body>& bodies() const { return bodies_; }
 
  private:
-  enum class Kind { Join, Seam, Centre, Bodies, Crossings };
+  enum class Kind { Join, Seam, Centre, Face, Bodies, Crossings };
   struct Part {
     Kind kind;
-    size_t patch = 0, meets = 0;  // Join: solved[patch].meets[meets]; Seam, Centre: solved[patch]
+    size_t patch = 0, meets = 0;  // Join: solved[patch].meets[meets]; Seam, Centre, Face: solved[patch]
   };
   // What a part read: its surfaces' versions, its declared join, the scene size, the grid.
   struct Key {
@@ -47,6 +47,7 @@ class ReportSession {
     Key key;
     JoinResult join;
     FillCentre centre;
+    FaceMeasure face;  // a patch's area and volume integrals (the bodies sum them)
     std::vector<Body> bodies;
     std::vector<Crossing> crossings;
     bool seam = false;  // a seam part: join holds it, or the patch does not close (seam false)
@@ -62,6 +63,7 @@ class ReportSession {
   size_t next_ = 0, measured_ = 0, kept_ = 0;
   SceneReport report_;
   std::vector<Body> bodies_;
+  std::vector<FaceMeasure> faces_;  // per solved patch, from its Face part
   // Per patch name: the surface last seen and its version (bumped when it changes).
   std::map<std::string, std::pair<SeparableSurface, uint64_t>> surfaces_;
   uint64_t versions_ = 0;
