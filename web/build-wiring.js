@@ -9,7 +9,8 @@ import { buildPlacementFolder } from './ui/placement-controls.js';
 import { addSurface, libraryEntry } from './state/surface-library.js';
 import { addBlend, addFill, addLoopFill, bordersOfPatch } from './state/scene-join.js';
 import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
-import { previewMesh, pivotOf, IDENTITY } from './viewer/placement-gizmo.js';
+import { previewMesh, pivotOf } from './viewer/placement-gizmo.js';
+import { dragPlacement, placementValues } from './state/placement.js';
 import { messageOf } from './state/document.js';
 import { bodyText } from './state/join-report.js';
 
@@ -29,7 +30,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   let drawnScene = null; // drawnText parsed, once
   const drawnPlacement = (name) => {
     if (!drawnScene && drawnText) drawnScene = JSON.parse(drawnText);
-    return surfacesOf(drawnScene).find((p) => p.name === name)?.placement ?? IDENTITY;
+    return placementValues(drawnScene, surfacesOf(drawnScene).find((p) => p.name === name)?.placement);
   };
 
   // Building edits: one undo step each; the answer shows beside the choices.
@@ -156,8 +157,9 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     const mesh = viewer.meshOf(name);
     if (!gizmoMode || !patch || !mesh) return;
     viewer.placement.setMode(gizmoMode);
-    const place = (now) => doc.apply({ name: 'place', run: (s) => setPlacement(s.scene, name, now), build: true });
-    viewer.placement.attach(name, patch.placement ?? IDENTITY, pivotOf(mesh), {
+    // The gizmo works in numbers; a placement naming parameters moves them (dragPlacement).
+    const place = (now) => doc.apply({ name: 'place', run: (s) => dragPlacement(s.scene, name, now), build: true });
+    viewer.placement.attach(name, placementValues(state.scene, patch.placement), pivotOf(mesh), {
       onDrag: (now) => {
         previewMesh(viewer.meshOf(name), drawnPlacement(name), now);
         place(now);

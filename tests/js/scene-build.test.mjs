@@ -472,3 +472,23 @@ describe('trigonometric trimlines', () => {
     assert.throws(() => trigCurveFromSamples([1, 2], [0, 1], -1), /maxTerms/);
   });
 });
+
+it('a gizmo drag moves the parameters a placement names, clamped to their ranges; expressions stay; one edit', async () => {
+  const { dragPlacement, placementValues } = await import('../../web/state/placement.js');
+  const scene = {
+    format: 'pdesurf-scene', version: 4, parameters: { wing_x: { value: 0.3, min: 0, max: 0.6 }, tilt: { value: 5, min: -10, max: 10 } },
+    patches: [{ name: 'w', kind: 'surface', x: 't', y: 'v', z: '0', t_range: [0, 1], v_range: [0, 1], placement: { translate: ['wing_x', 0, '0.1*2'], rotate: [0, 'tilt', 0] } }],
+  };
+  assert.deepEqual(placementValues(scene, scene.patches[0].placement), { translate: [0.3, 0, 0.2], rotate: [0, 5, 0], scale: 1 });
+  dragPlacement(scene, 'w', { translate: [0.5, 0.25, 0.7], rotate: [1, 7, 0], scale: 2 });
+  assert.equal(scene.parameters.wing_x.value, 0.5);
+  assert.equal(scene.parameters.tilt.value, 7);
+  assert.deepEqual(scene.patches[0].placement, { translate: ['wing_x', 0.25, '0.1*2'], rotate: [1, 'tilt', 0], scale: 2 });
+  dragPlacement(scene, 'w', { translate: [9, 0.25, 0.2], rotate: [1, -40, 0], scale: 2 });
+  assert.equal(scene.parameters.wing_x.value, 0.6, 'past its range: stops at the end');
+  assert.equal(scene.parameters.tilt.value, -10);
+  // A placement of numbers only is replaced as before.
+  scene.patches[0].placement = { translate: [1, 2, 3] };
+  dragPlacement(scene, 'w', { translate: [4, 5, 6], rotate: [0, 0, 0], scale: 1 });
+  assert.deepEqual(scene.patches[0].placement.translate, [4, 5, 6]);
+});

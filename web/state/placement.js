@@ -80,3 +80,43 @@ export function placePoint(scene, placement, X) {
   const s = Array.isArray(sc) ? sc.map((x, k) => num(x, `placement.scale[${k}]`)) : [0, 1, 2].map(() => num(sc, 'placement.scale'));
   return R.map((row, i) => T[i] + row[0] * s[0] * X[0] + row[1] * s[1] * X[1] + row[2] * s[2] * X[2]);
 }
+
+/** The placement with every entry a number: parameters and expressions evaluated (the gizmo's). */
+export function placementValues(scene, placement) {
+  if (!isObject(placement)) return { translate: [0, 0, 0], rotate: [0, 0, 0], scale: 1 };
+  const num = (x, path) => numberField(scene, x, path);
+  const three = (v, fallback, path) => (v ?? [fallback, fallback, fallback]).map((x, k) => num(x, `${path}[${k}]`));
+  const sc = placement.scale ?? 1;
+  return {
+    translate: three(placement.translate, 0, 'placement.translate'),
+    rotate: three(placement.rotate, 0, 'placement.rotate'),
+    scale: Array.isArray(sc) ? three(sc, 1, 'placement.scale') : num(sc, 'placement.scale'),
+  };
+}
+
+const parameterNamed = (scene, x) => (typeof x === 'string' && Object.hasOwn(scene.parameters ?? {}, x.trim()) ? x.trim() : null);
+
+/**
+ * A gizmo drag's placement `now` (numbers, a uniform scale) set on a surface whose placement
+ * may name the scene's parameters: an entry that is a parameter's name moves that parameter
+ * (within its range: the surface stops at its end, as the slider does), a number is replaced,
+ * any other expression is kept (the drag cannot move along it). The aeroplane's wing sits at
+ * translate ["wing_x", 0, 0]: dragging it along x is dragging wing_x. One edit: one undo step.
+ */
+export function dragPlacement(scene, name, now) {
+  const patch = requirePatch(scene, name);
+  const old = patch.placement;
+  if (!isObject(old)) return setPlacement(scene, name, now);
+  const moved = (was, value) => {
+    if (was === undefined || typeof was === 'number') return value;
+    const p = parameterNamed(scene, was);
+    if (!p) return was;
+    const param = scene.parameters[p];
+    const lo = Number.isFinite(param.min) ? param.min : -Infinity, hi = Number.isFinite(param.max) ? param.max : Infinity;
+    param.value = Math.min(hi, Math.max(lo, value));
+    return was;
+  };
+  const three = (was, values, fallback) => values.map((x, k) => moved(was?.[k] ?? (was === undefined ? undefined : fallback), x));
+  const scale = Array.isArray(old.scale) ? three(old.scale, [now.scale, now.scale, now.scale], 1) : moved(old.scale, now.scale);
+  setPlacement(scene, name, { translate: three(old.translate, now.translate, 0), rotate: three(old.rotate, now.rotate, 0), scale });
+}
