@@ -31,6 +31,7 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
       resources: Object.fromEntries(performance.getEntriesByType('resource').map((r) => [new URL(r.name).pathname, r.responseEnd])),
       info: window.__pdesurf?.firstFrameInfo ?? null,
       solvedAhead: window.__pdesurf?.lastSolve?.solvedAhead ?? null,
+      workerMs: window.__pdesurf?.lastSolve?.workerMs ?? null, // the first solve's time in the worker (its wasm)
       surfaceBeforePanel: window.__pdesurf?.surfaceBeforePanel ?? null,
     }), frameMs);
     return { ...seen, problems };
