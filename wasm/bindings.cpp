@@ -144,8 +144,6 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
     static SolveCache cache;
     auto keptSolved = std::make_shared<const std::vector<SolvedPatch>>(solveScene(scene, &cache));
     const std::vector<SolvedPatch>& solved = *keptSolved;
-    // The last solve, for its report part by part (reportBegin, reportStep).
-    wasm::keepSolve(std::move(kept), std::move(keptSolved));
     // Meshes are kept between calls: a slider drag re-solves at the same grid, so the
     // buffers, uvs and indices are reused instead of rebuilt.
     static std::vector<Mesh> meshes;
@@ -205,6 +203,9 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
     r.set("title", scene.title);
     r.set("patches", patches);
     if (joins) r.set("report", reportOf(scene, solved, crossings));
+    // The last good solve, for its report part by part (reportBegin, reportStep): a solve that
+    // failed above leaves the one drawn before.
+    wasm::keepSolve(std::move(kept), std::move(keptSolved));
     // The wasm heap never shrinks; at least hand large meshes back to the allocator, so a
     // one-off big grid does not stay held by the cache (the next solve reuses the memory).
     if (static_cast<size_t>(nu + 1) * (nv + 1) > size_t{513} * 513) std::vector<Mesh>().swap(meshes), meshSources.clear();

@@ -56,6 +56,47 @@ describe('certified after drawing', { skip }, () => {
     await page.close();
   });
 
+  it('the worker: an export or a failing solve asked for during a report pauses it; the report follows; a failed solve has none', async () => {
+    const page = await h.open('/web/#example=you2004-fig4a');
+    const small = fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig4a.json'), 'utf8');
+    const bad = JSON.stringify({ ...JSON.parse(small), patches: [{ name: 'x', kind: 'pde' }] });
+    const messages = await page.evaluate(async ([sa, sb, bad]) => {
+      const worker = new Worker('/web/solver/solver-worker.js', { type: 'module' });
+      const got = [];
+      const done = new Promise((resolve) => {
+        worker.onmessage = (e) => {
+          const { id, kind, ok } = e.data;
+          if (kind === 'ahead' || kind === 'progress') return;
+          got.push(`${kind} ${id} ${ok ? 'ok' : 'failed'}`);
+          if (kind === 'report' && id === 1) {
+            worker.postMessage({ id: 3, scene: bad, options });
+            setTimeout(() => resolve(got), 1500); // a report of the failed solve would show here
+          }
+        };
+      });
+      const options = { nu: 64, nv: 64, curvature: false, joins: true, crossings: false };
+      worker.postMessage({ id: 1, scene: sa, options });
+      worker.postMessage({ id: 2, kind: 'exportCad', scene: sb, options: { format: 'faces' } });
+      const out = await done;
+      // A solve that fails during a report leaves the drawn one's report to finish.
+      const second = await new Promise((resolve) => {
+        const got2 = [];
+        worker.onmessage = (e) => {
+          const { id, kind, ok } = e.data;
+          got2.push(`${kind} ${id} ${ok ? 'ok' : 'failed'}`);
+          if (kind === 'report') resolve(got2);
+        };
+        worker.postMessage({ id: 4, scene: sa, options });
+        worker.postMessage({ id: 5, scene: bad, options });
+      });
+      worker.terminate();
+      return [...out, ...second];
+    }, [JSON.stringify(plane), small, bad]);
+    assert.deepEqual(messages, ['solve 1 ok', 'exportCad 2 ok', 'report 1 ok', 'solve 3 failed', 'solve 4 ok', 'solve 5 failed', 'report 4 ok'],
+      JSON.stringify(messages));
+    await page.close();
+  });
+
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     it(`${viewport.width}×${viewport.height}: an edit of the aeroplane is drawn before its report; the Joins folder says "checking…", then shows it`, async () => {
       const page = await h.open('/web/#example=you2004-fig8d', { viewport });

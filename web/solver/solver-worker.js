@@ -150,9 +150,11 @@ if (first !== null) {
 self.onmessage = async (event) => {
   asked = true;
   const { id, kind = 'solve', scene, options } = event.data;
-  // A solve makes the report in progress stale; anything else pauses it (resumed below).
-  const paused = kind === 'solve' ? null : reporting;
+  // A solve makes the report in progress stale; anything else pauses it (resumed below), and
+  // so does a solve that fails: the module's last solve is still the one drawn.
+  const paused = reporting;
   reporting = null;
+  let solved = false;
   const t0 = performance.now();
   try {
     const early = kind === 'solve' ? await ahead.take(scene, options) : null;
@@ -165,12 +167,13 @@ self.onmessage = async (event) => {
     if (!Object.hasOwn(run, kind)) throw new Error(`unknown request ${JSON.stringify(kind)}`);
     const [result, transfer] = run[kind](solver, scene, options, id);
     self.postMessage({ id, kind, ok: true, result, ms: performance.now() - t0 }, transfer);
-    if (kind === 'solve' && result.reportPending) certifyAfter(solver, id, options);
+    solved = kind === 'solve';
+    if (solved && result.reportPending) certifyAfter(solver, id, options);
   } catch (err) {
     const error = { code: String(err?.code || 'Internal'), message: String(err?.message || err) };
     self.postMessage({ id, kind, ok: false, error, ms: performance.now() - t0 });
   }
   // The module's last solve is still the paused report's (exports solve on their own): again,
   // from its first part (the parts measured are kept).
-  if (paused && !reporting) certifyAfter(await ready, paused.id, paused.options);
+  if (paused && !solved && !reporting) certifyAfter(await ready, paused.id, paused.options);
 };
