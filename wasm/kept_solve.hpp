@@ -17,6 +17,5 @@ struct KeptSolve {
 };
 
 void keepSolve(std::shared_ptr<const Scene> scene, std::shared_ptr<const std::vector<SolvedPatch>> solved);
-const KeptSolve& keptSolve();
 
 }  // namespace pdesurf::wasm

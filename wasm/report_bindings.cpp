@@ -92,8 +92,6 @@ void keepSolve(std::shared_ptr<const Scene> scene, std::shared_ptr<const std::ve
   ++kept.generation;
 }
 
-const KeptSolve& keptSolve() { return kept; }
-
 }  // namespace pdesurf::wasm
 
 EMSCRIPTEN_BINDINGS(pdesurf_report) {

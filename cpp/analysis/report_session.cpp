@@ -31,8 +31,10 @@ void ReportSession::begin(const Scene& scene, const std::vector<SolvedPatch>& so
     const std::string& name = solved[i].patch->name;
     auto it = surfaces_.find(name);
     const bool same = it != surfaces_.end() && sameSurface(it->second.first, solved[i].surface);
+    // A surface is copied only when it changed (an edit changes few; the copy is its terms).
     current_[i] = same ? it->second.second : ++versions_;
-    seen[name] = {solved[i].surface, current_[i]};
+    if (same) seen[name] = std::move(it->second);
+    else seen[name] = {solved[i].surface, current_[i]};
   }
   surfaces_.swap(seen);  // patches gone from the scene are forgotten
   report_.sceneSize = sceneSizeOf(solved);

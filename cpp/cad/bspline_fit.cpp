@@ -98,7 +98,7 @@ LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, co
   const Eigen::SparseMatrix<double> Af = Au.middleCols(2, inner), AfT = Af.transpose();
   Eigen::MatrixXd Ac(Au.rows(), 4);
   Ac << Eigen::MatrixXd(Au.col(0)), Eigen::MatrixXd(Au.col(1)), Eigen::MatrixXd(Au.col(n - 2)), Eigen::MatrixXd(Au.col(n - 1));
-  // The normal matrices are banded (degree + 1 wide, plus the f.periodic wrap): sparse Cholesky.
+  // The normal matrices are banded (degree + 1 wide, plus the periodic wrap): sparse Cholesky.
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> nu, nv;
   if (inner > 0) nu.compute(AfT * Af);
   nv.compute(AvT * Av);
@@ -121,8 +121,8 @@ LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, co
     if (inner > 0) cu.middleRows(2, inner) = nu.solve(AfT * (X - Ac * fixed));
     return cu;
   };
-  // A v-range that is not f.periodic gets the same Hermite ends in v (an open patch's corners
-  // then meet too; a f.closed one's seam, a crease, is one-sided on each side): the end
+  // A v-range that is not periodic gets the same Hermite ends in v (an open patch's corners
+  // then meet too; a closed one's seam, a crease, is one-sided on each side): the end
   // columns from S and S_v at v0 and v1, S_v's own u-fit ended by S_uv at the corners
   // (not where a kink sits at an end: S_v there is two-sided).
   const bool hermiteV = !f.periodic && !f.kinkAtEnds;

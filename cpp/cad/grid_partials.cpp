@@ -83,10 +83,6 @@ GridPartials SurfaceOnGrid::at(const std::vector<double>& v, int count) const {
   return out;
 }
 
-GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v) {
-  return SurfaceOnGrid(s, u).at(v);
-}
-
 namespace {
 
 // B's partials on the grid, each handed to `use(k, c, matrix)` as it is made (one at a time:

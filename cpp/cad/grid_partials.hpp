@@ -13,14 +13,12 @@
 
 namespace pdesurf {
 
-// Per coordinate Σ_t G_t^(a)(u_i) g_t^(b)(v_j) as one matrix product per partial, general
-// functions by one compiled program over every v, the pointwise part along each row. Throws
-// Error(NonFinite) naming the coordinate when a value is not finite.
-GridPartials tabulateSurface(const SeparableSurface& s, const std::vector<double>& u, const std::vector<double>& v);
-
-// The same a block of columns at a time: the u-factors tabulated and the programs compiled
-// once, then any v values (the certificate walks its grid in blocks: one block's partials in
-// memory, not the whole grid's). `s` must outlive it.
+// S on a tensor grid: per coordinate Σ_t G_t^(a)(u_i) g_t^(b)(v_j) as one matrix product per
+// partial, general functions by one compiled program over the v values, the pointwise part
+// along each row. The u-factors are tabulated and the programs compiled once, then any block
+// of v values (the certificate walks its grid in blocks: one block's partials in memory, not
+// the whole grid's). `s` must outlive it. at() throws Error(NonFinite) naming the coordinate
+// when a value is not finite.
 class SurfaceOnGrid {
  public:
   SurfaceOnGrid(const SeparableSurface& s, std::vector<double> u);

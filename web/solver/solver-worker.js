@@ -21,8 +21,9 @@
 // REPORT_SLICE_MS between which any message that arrived runs first:
 //   out: { id, kind: 'report', ok: true, result: report, ms, measured, kept } (id 'ahead' for
 //        the solve done ahead), or the same failure as a solve
-// A new solve drops the report in progress (it is of an older scene); any other request
-// (an export) pauses it: it starts again after, keeping the parts already measured.
+// A new solve drops the report in progress (it is of an older scene); any other request (an
+// export), or a solve that fails, pauses it: it starts again after, keeping the parts already
+// measured.
 import { loadSolver } from './pdesurf-solver.js';
 import { createAheadSolve } from './ahead-solve.js';
 

@@ -116,7 +116,7 @@ export function dragPlacement(scene, name, now) {
     param.value = Math.min(hi, Math.max(lo, value));
     return was;
   };
-  const three = (was, values, fallback) => values.map((x, k) => moved(was?.[k] ?? (was === undefined ? undefined : fallback), x));
-  const scale = Array.isArray(old.scale) ? three(old.scale, [now.scale, now.scale, now.scale], 1) : moved(old.scale, now.scale);
-  setPlacement(scene, name, { translate: three(old.translate, now.translate, 0), rotate: three(old.rotate, now.rotate, 0), scale });
+  const three = (was, values) => values.map((x, k) => moved(was?.[k], x));
+  const scale = Array.isArray(old.scale) ? three(old.scale, [now.scale, now.scale, now.scale]) : moved(old.scale, now.scale);
+  setPlacement(scene, name, { translate: three(old.translate, now.translate), rotate: three(old.rotate, now.rotate), scale });
 }
