@@ -69,15 +69,14 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out) {
     faces.push_back(f.surface);
   }
   // The joins between the written faces, by the join certificate's own measure.
-  const double size = sceneSizeOf(solved);
-  const std::vector<FittedJoin> joins = certifyFittedJoins(scene, solved, fits, size);
+  const std::vector<FittedJoin> joins = certifyFittedJoins(scene, solved, fits);
   if (!joins.empty()) out << "joins of the written faces:\n";
   for (const FittedJoin& j : joins) {
     const JoinResult& r = j.faces;
     char normals[120] = "";
     if (r.level >= 1) std::snprintf(normals, sizeof normals, ", normals %.2g deg (target %.2g)", r.g1Deg, j.allowedNormalDeg);
     std::snprintf(line, sizeof line, "  %s %s - %s %s: %s, gap %.3g (allowed %.3g)%s: %s\n", r.patch.c_str(), r.end.c_str(),
-                  r.surface.c_str(), r.edge.c_str(), levelName(r.level), r.g0 * size, j.allowedGap, normals,
+                  r.surface.c_str(), r.edge.c_str(), levelName(r.level), r.g0 * r.size, j.allowedGap, normals,
                   r.ok ? "ok" : r.fold ? "FOLDS" : "NOT MET");
     out << line;
   }

@@ -45,12 +45,12 @@ nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& re
   using nlohmann::json;
   json joins = json::array(), seams = json::array(), crossings = json::array();
   for (const JoinResult& j : r.seams)
-    seams.push_back({{"patch", j.patch}, {"level", levelName(j.level)}, {"sharp_in_data", j.level == 0}, {"g0", j.g0}, {"g1_deg", j.g1Deg},
+    seams.push_back({{"patch", j.patch}, {"level", levelName(j.level)}, {"sharp_in_data", j.level == 0}, {"size", j.size}, {"g0", j.g0}, {"g1_deg", j.g1Deg},
                      {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold}, {"degenerate", j.degenerate}, {"worst_u", j.worstV},
                      {"ok", j.ok}});
   for (const JoinResult& j : r.joins)
     joins.push_back({{"patch", j.patch}, {"end", j.end}, {"surface", j.surface}, {"edge", j.edge}, {"level", levelName(j.level)},
-                     {"g0", j.g0}, {"g1_deg", j.g1Deg}, {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold},
+                     {"size", j.size}, {"g0", j.g0}, {"g1_deg", j.g1Deg}, {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold},
                      {"degenerate", j.degenerate}, {"worst_v", j.worstV}, {"ok", j.ok}});
   for (const Crossing& c : r.crossings)
     crossings.push_back({{"patch", c.patch}, {"other", c.other}, {"u", c.u}, {"v", c.v}, {"other_u", c.otherU}, {"other_v", c.otherV},

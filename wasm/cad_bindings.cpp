@@ -92,16 +92,15 @@ val exportCad(const std::string& sceneJson, val options) {
       surfaces.push_back(f.surface);
     }
     // The joins between the faces, as `pdesurf export` prints them (cad/fitted_joins.hpp).
-    const double size = sceneSizeOf(solved);
     val joins = val::array();
-    for (const FittedJoin& j : certifyFittedJoins(scene, solved, fits, size)) {
+    for (const FittedJoin& j : certifyFittedJoins(scene, solved, fits)) {
       val o = val::object();
       o.set("patch", j.faces.patch);
       o.set("end", j.faces.end);
       o.set("surface", j.faces.surface);
       o.set("edge", j.faces.edge);
       o.set("level", std::string(levelName(j.faces.level)));
-      o.set("gap", j.faces.g0 * size);
+      o.set("gap", j.faces.g0 * j.faces.size);
       o.set("allowedGap", j.allowedGap);
       o.set("normalDeg", j.faces.g1Deg);
       o.set("ok", j.faces.ok);

@@ -14,6 +14,7 @@ val joinObject(const JoinResult& j) {
   o.set("surface", j.surface);
   o.set("edge", j.edge);
   o.set("level", std::string(levelName(j.level)));
+  o.set("size", j.size);
   o.set("g0", j.g0);
   o.set("g1_deg", j.g1Deg);
   o.set("g2_rel", j.level == 2 ? val(j.g2Rel) : val::null());

@@ -6,6 +6,7 @@
 
 #include "analysis/edge_samples.hpp"
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "surface/mesh.hpp"
 
 namespace pdesurf {
@@ -133,8 +134,21 @@ bool keepsPromise(const JoinResult& r, int measured) {
   return r.g0 <= kG0Tolerance && !r.fold && measured > 0 && (r.level < 1 || r.g1Deg <= kG1ToleranceDeg) && (r.level < 2 || r.g2Rel <= kG2Tolerance);
 }
 
-JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, double size,
-                      const EdgeReader& read) {
+// The bounding box of a patch's 32×32 samples, grown by points.
+struct Box {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = Eigen::Vector3d::Constant(-INFINITY);
+  void add(const Eigen::Vector3d& x) { lo = lo.cwiseMin(x), hi = hi.cwiseMax(x); }
+  void add(const SeparableSurface& s) {
+    const GridSamples g = sampleGrid(s, 32, 32);
+    for (size_t k = 0; k < g.X.size(); k += 3) add(Eigen::Vector3d(&g.X[k]));
+  }
+  double diagonal() const {
+    const double d = (hi - lo).norm();
+    return std::isfinite(d) && d > 0 ? d : 1.0;
+  }
+};
+
+JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& prim, const SolvedPatch& target, const EdgeReader& read) {
   const SeparableSurface& ts = target.surface;
   const SourceEdge source = sourceEdgeOf(primary, m);
   JoinResult r;
@@ -166,18 +180,25 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   }
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);
+  // What is joined: the promising patch and the edge it meets (the met surface may be far
+  // larger: a plane; the rest of the scene does not count).
+  Box box;
+  box.add(ts);
+  for (const EdgePoint& e : P) box.add(e.X);
+  r.size = box.diagonal();
+  const double size = r.size;
   const int measured = compareEdges(B, P, p0, p1, size, &r);
   // Far beyond rounding: the primary's edge is not this border at all; a scene error.
   if (r.g0 > 1e-3)
     throw Error(ErrorCode::InvalidField, (m.curve ? "the " : "edge ") + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
-                                             "': they are " + std::to_string(r.g0 * size) + " apart at v = " + std::to_string(r.worstV));
+                                             "': they are " + numberText(r.g0 * r.size) + " apart at v = " + numberText(r.worstV));
   r.ok = keepsPromise(r, measured);
   return r;
 }
 
 // A pde patch's v closes on itself when both its u-edges do (a loop at u = 0 and at u = 1:
 // a tube, a vase, a fill): then v = v0 and v = v1 are one curve, a join of the patch with
-// itself. Corners this far apart (of the scene's size) are an open patch, not a torn one.
+// itself. Corners this far apart (of the patch's size) are an open patch, not a torn one.
 constexpr double kClosedCorners = 1e-6;
 
 bool closesInV(const SeparableSurface& s, double size) {
@@ -238,20 +259,22 @@ JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const Sol
 const char* levelName(int level) { return level <= 0 ? "G0" : level == 1 ? "G1" : "G2"; }
 
 double sceneSizeOf(const std::vector<SolvedPatch>& solved) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-  for (const SolvedPatch& sp : solved) {
-    const GridSamples g = sampleGrid(sp.surface, 32, 32);
-    for (size_t k = 0; k < g.X.size(); k += 3) lo = lo.cwiseMin(Eigen::Vector3d(&g.X[k])), hi = hi.cwiseMax(Eigen::Vector3d(&g.X[k]));
-  }
-  const double d = (hi - lo).norm();
-  return std::isfinite(d) && d > 0 ? d : 1.0;
+  Box box;
+  for (const SolvedPatch& sp : solved) box.add(sp.surface);
+  return box.diagonal();
 }
 
-JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, double size, const EdgeReader& read) {
+double patchSizeOf(const SeparableSurface& surface) {
+  Box box;
+  box.add(surface);
+  return box.diagonal();
+}
+
+JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, const EdgeReader& read) {
   const Patch& p = *solved[i].patch;
   const Meets& m = p.meets[k];
   try {
-    return certifyOne(p, m, solved[i], solvedOf(solved, m.patch), size, read);
+    return certifyOne(p, m, solved[i], solvedOf(solved, m.patch), read);
   } catch (const Error& e) {
     // A join derived from an end is that end's; the scene's own is the surface's `meets`.
     size_t index = 0;
@@ -260,17 +283,20 @@ JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solve
   }
 }
 
-std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double size, const EdgeReader& read) {
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, const EdgeReader& read) {
   std::vector<JoinResult> out;
   for (size_t i = 0; i < solved.size(); ++i)
-    for (size_t k = 0; k < solved[i].patch->meets.size(); ++k) out.push_back(certifyJoin(scene, solved, i, k, size, read));
+    for (size_t k = 0; k < solved[i].patch->meets.size(); ++k) out.push_back(certifyJoin(scene, solved, i, k, read));
   return out;
 }
 
-std::optional<JoinResult> certifySeam(const SolvedPatch& sp, double size) {
+std::optional<JoinResult> certifySeam(const SolvedPatch& sp) {
   const SeparableSurface& s = sp.surface;
-  if (sp.patch->kind != PatchKind::Pde || !closesInV(s, size)) return std::nullopt;
+  if (sp.patch->kind != PatchKind::Pde) return std::nullopt;
+  const double size = patchSizeOf(s);
+  if (!closesInV(s, size)) return std::nullopt;
   JoinResult r;
+  r.size = size;
   r.patch = r.surface = sp.patch->name;
   r.end = "v1", r.edge = "v0";
   r.level = seamLevel(*sp.patch, s, size);
@@ -283,18 +309,18 @@ std::optional<JoinResult> certifySeam(const SolvedPatch& sp, double size) {
   return r;
 }
 
-std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double size) {
+std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved) {
   std::vector<JoinResult> out;
   for (const SolvedPatch& sp : solved)
-    if (auto r = certifySeam(sp, size)) out.push_back(*r);
+    if (auto r = certifySeam(sp)) out.push_back(*r);
   return out;
 }
 
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid) {
   SceneReport r;
   r.sceneSize = sceneSizeOf(solved);
-  r.joins = certifyJoins(scene, solved, r.sceneSize);
-  r.seams = certifySeams(solved, r.sceneSize);
+  r.joins = certifyJoins(scene, solved);
+  r.seams = certifySeams(solved);
   for (const SolvedPatch& sp : solved)
     if (sp.patch->fill.given) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
   if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);

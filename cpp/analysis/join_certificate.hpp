@@ -17,7 +17,7 @@
 namespace pdesurf {
 
 constexpr int kJoinSamples = 256;
-constexpr double kG0Tolerance = 1e-9;   // of the scene's size
+constexpr double kG0Tolerance = 1e-9;   // of the join's size (JoinResult::size)
 constexpr double kG1ToleranceDeg = 1e-6;
 constexpr double kG2Tolerance = 1e-6;   // relative
 
@@ -27,7 +27,8 @@ struct JoinResult {
   std::string surface;  // the primary surface
   std::string edge;     // "t0", "t1", or "curve replacing t0" / "curve replacing t1" (a trimline)
   int level = 0;        // promised: 0 G0, 1 G1, 2 G2
-  double g0 = 0.0;      // largest gap / scene size
+  double size = 0.0;    // what is joined: the diagonal of the promising patch's box and the met edge's
+  double g0 = 0.0;      // largest gap / size
   double g1Deg = 0.0;   // largest tangent-plane angle, degrees (level >= 1 and measured)
   double g2Rel = 0.0;   // largest relative normal-curvature mismatch across (level 2 only)
   double worstV = 0.0;  // the primary's v where the promised figure is worst
@@ -62,20 +63,23 @@ struct JoinRanges {
 };
 JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const SolvedPatch& target);
 
-// sceneSize: the diagonal of all patches' bounding box (see sceneSizeOf). The verdicts (ok)
-// are the solved surfaces' tolerances; another reader's caller judges its own.
-std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, double sceneSize,
-                                     const EdgeReader& read = nullptr);
+// Every join's tolerances are relative to what it joins (JoinResult::size: the promising
+// patch's bounding box with the met edge's samples), never to the rest of the scene: a far
+// patch elsewhere cannot hide a gap. The verdicts (ok) are the solved surfaces' tolerances;
+// another reader's caller judges its own.
+std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<SolvedPatch>& solved, const EdgeReader& read = nullptr);
 // One of them: patch solved[i]'s declared join meets[k] (errors named as certifyJoins names them).
-JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, double sceneSize,
-                       const EdgeReader& read = nullptr);
+JoinResult certifyJoin(const Scene& scene, const std::vector<SolvedPatch>& solved, size_t i, size_t k, const EdgeReader& read = nullptr);
 // Every pde patch whose v closes on itself (both u-edges are loops) joined to itself along
 // v = v0 and v = v1: patch = surface = its name, end "v1", edge "v0", worstV the u where the
-// figure is worst. At least G1, G2 where the patch promises curvature.
-std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved, double sceneSize);
+// figure is worst. At least G1, G2 where the patch promises curvature. Its size: the patch's.
+std::vector<JoinResult> certifySeams(const std::vector<SolvedPatch>& solved);
 // One of them: nothing when the patch is not a pde patch closed in v.
-std::optional<JoinResult> certifySeam(const SolvedPatch& patch, double sceneSize);
+std::optional<JoinResult> certifySeam(const SolvedPatch& patch);
+// The diagonal of all patches' bounding boxes (32×32 samples each): the crossings' and the
+// bodies' scale. patchSizeOf: one patch's.
 double sceneSizeOf(const std::vector<SolvedPatch>& solved);
+double patchSizeOf(const SeparableSurface& surface);
 // Joins, seams, fills' centres, then crossings on a crossingGrid × crossingGrid mesh of every patch (0: none).
 SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 64);
 

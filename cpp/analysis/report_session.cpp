@@ -74,7 +74,6 @@ std::string ReportSession::nameOf(const Part& p) const {
 ReportSession::Key ReportSession::keyOf(const Part& p) const {
   const std::vector<SolvedPatch>& s = *solved_;
   Key k;
-  k.size = report_.sceneSize;
   auto versionOf = [&](const std::string& name) {
     for (size_t i = 0; i < s.size(); ++i)
       if (s[i].patch->name == name) return current_[i];
@@ -88,19 +87,15 @@ ReportSession::Key ReportSession::keyOf(const Part& p) const {
       break;
     }
     case Kind::Seam:
-      k.versions = {current_[p.patch]};
-      k.identity = s[p.patch].patch->name;
-      break;
     case Kind::Centre:
     case Kind::Face:
-      // Of the surface alone: not relative to the scene's size (most edits change it).
       k.versions = {current_[p.patch]};
       k.identity = s[p.patch].patch->name;
-      k.size = 0;
       break;
     case Kind::Bodies:
     case Kind::Crossings:
-      // Everything: every surface, every declared join (the topology follows them).
+      // Everything: every surface, every declared join (the topology follows them; the scene's
+      // size, their scale, is a function of the surfaces).
       k.versions = current_;
       for (const SolvedPatch& sp : s) {
         k.identity += sp.patch->name + ";";
@@ -127,9 +122,9 @@ bool ReportSession::step() {
     k.key = key;
     const std::vector<SolvedPatch>& s = *solved_;
     switch (p.kind) {
-      case Kind::Join: k.join = certifyJoin(*scene_, s, p.patch, p.meets, report_.sceneSize); break;
+      case Kind::Join: k.join = certifyJoin(*scene_, s, p.patch, p.meets); break;
       case Kind::Seam:
-        if (auto r = certifySeam(s[p.patch], report_.sceneSize)) k.join = *r, k.seam = true;
+        if (auto r = certifySeam(s[p.patch])) k.join = *r, k.seam = true;
         break;
       case Kind::Centre: k.centre = measureFillCentre(s[p.patch].patch->name, s[p.patch].surface); break;
       case Kind::Face: k.face = faceMeasure(s[p.patch].surface); break;

@@ -2,8 +2,9 @@
 // one-off checkScene: a stateful session that measures the report one part at a time (a join,
 // a seam, a fill's centre, the bodies, the crossings), so its caller can stop between parts
 // when a newer edit makes the report stale, and that keeps every part it measured: a part
-// whose inputs are the same as last time (the same surfaces, exactly, the same declared join,
-// the same scene size) is taken as it was. An edit of one wing re-measures that wing's joins.
+// whose inputs are the same as last time (the same surfaces, exactly, the same declared join)
+// is taken as it was: a join's tolerances are its own (not the scene's size), so an edit of
+// one wing re-measures that wing's joins and nothing else but the bodies and the crossings.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -36,12 +37,11 @@ class ReportSession {
     Kind kind;
     size_t patch = 0, meets = 0;  // Join: solved[patch].meets[meets]; Seam, Centre, Face: solved[patch]
   };
-  // What a part read: its surfaces' versions, its declared join, the scene size, the grid.
+  // What a part read: its surfaces' versions, its declared join, the grid.
   struct Key {
     std::vector<uint64_t> versions;
     std::string identity;  // names, the declared join's fields, the grid
-    double size = 0;
-    bool operator==(const Key& o) const { return versions == o.versions && identity == o.identity && size == o.size; }
+    bool operator==(const Key& o) const { return versions == o.versions && identity == o.identity; }
   };
   struct Kept {
     Key key;

@@ -31,7 +31,7 @@ std::vector<EdgePoint> fittedEdge(const BSplineSurface& b, const SeparableSurfac
 }  // namespace
 
 std::vector<FittedJoin> certifyFittedJoins(const Scene& scene, const std::vector<SolvedPatch>& solved,
-                                           const std::vector<PatchFit>& fits, double sceneSize, double normalToleranceDeg) {
+                                           const std::vector<PatchFit>& fits, double normalToleranceDeg) {
   if (fits.size() != solved.size()) throw Error(ErrorCode::InvalidField, "one fitted face per solved patch");
   const auto indexOf = [&](const SolvedPatch& p) {
     for (size_t i = 0; i < solved.size(); ++i)
@@ -42,8 +42,8 @@ std::vector<FittedJoin> certifyFittedJoins(const Scene& scene, const std::vector
     const size_t i = indexOf(p);
     return fittedEdge(fits[i].surface, p.surface, alongU, end, at);
   };
-  const std::vector<JoinResult> surfaces = certifyJoins(scene, solved, sceneSize);
-  const std::vector<JoinResult> faces = certifyJoins(scene, solved, sceneSize, readFaces);
+  const std::vector<JoinResult> surfaces = certifyJoins(scene, solved);
+  const std::vector<JoinResult> faces = certifyJoins(scene, solved, readFaces);
   const auto deviationOf = [&](const std::string& name) {
     for (size_t i = 0; i < solved.size(); ++i)
       if (solved[i].patch->name == name) return fits[i].report.deviation;
@@ -51,11 +51,12 @@ std::vector<FittedJoin> certifyFittedJoins(const Scene& scene, const std::vector
   };
   std::vector<FittedJoin> out;
   for (size_t k = 0; k < faces.size(); ++k) {
-    FittedJoin j{faces[k], surfaces[k].g0 * sceneSize, 0.0, faces[k].level >= 1 ? normalToleranceDeg : 180.0};
+    FittedJoin j{faces[k], surfaces[k].g0 * surfaces[k].size, 0.0, faces[k].level >= 1 ? normalToleranceDeg : 180.0};
     j.allowedGap = j.surfacesGap + deviationOf(faces[k].patch) + deviationOf(faces[k].surface);
     // The gap within what the two certificates allow (a rounding's slack); normals within the
     // target where the join promises a tangent plane; no fold.
-    j.faces.ok = j.faces.g0 * sceneSize <= j.allowedGap * (1 + 1e-9) + 1e-15 * sceneSize && !j.faces.fold &&
+    const double size = faces[k].size;
+    j.faces.ok = j.faces.g0 * size <= j.allowedGap * (1 + 1e-9) + 1e-15 * size && !j.faces.fold &&
                  (faces[k].level < 1 || j.faces.g1Deg <= normalToleranceDeg);
     out.push_back(j);
   }

@@ -18,9 +18,9 @@ struct FittedJoin {
   double allowedNormalDeg;  // the fit's normal target, for G1 and G2 joins (else 180)
 };
 
-// fits[i] is solved[i]'s (fitScene's order). sceneSize as certifyJoins takes it.
+// fits[i] is solved[i]'s (fitScene's order). Each join's scale is its own (JoinResult::size).
 std::vector<FittedJoin> certifyFittedJoins(const Scene& scene, const std::vector<SolvedPatch>& solved,
-                                           const std::vector<PatchFit>& fits, double sceneSize,
+                                           const std::vector<PatchFit>& fits,
                                            double normalToleranceDeg = FitOptions{}.normalToleranceDeg);
 
 }  // namespace pdesurf

@@ -59,4 +59,10 @@ std::string clipMiddle(const std::string& s, size_t maxBytes) {
   return s.substr(0, head) + kEllipsis + s.substr(tail);
 }
 
+std::string numberText(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
 }  // namespace pdesurf

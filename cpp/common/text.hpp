@@ -27,4 +27,7 @@ std::string clipText(const std::string& s, size_t maxBytes);
 // field path it starts with and the reason it ends with.
 std::string clipMiddle(const std::string& s, size_t maxBytes);
 
+// A number for a message: 6 significant digits ("0.5", "1e+300"), never %f's hundreds.
+std::string numberText(double x);
+
 }  // namespace pdesurf

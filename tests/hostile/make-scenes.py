@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes tests/hostile/scenes/*.json and scenes.json: hostile scenes, each with the named
-error both the CLI and the wasm module must give (tests/js/hostile.test.mjs). Deterministic:
+error both the CLI and the wasm module must give (tests/js/hostile.test.mjs): `export` to OBJ
+and a solve, or (command "check") `pdesurf check` and a solve with the join report. Deterministic:
 run again after adding a case.   python3 tests/hostile/make-scenes.py"""
 import copy, json, os
 
@@ -55,6 +56,18 @@ def fig4_range_past_border(d):
 def hex_number(d):
     d['patches'][0]['boundary']['z']['u0'] = ['0x10']
 
+fig4a = load('examples/you2004-fig4a.json')
+def gap_hidden_by_far_patch(d):
+    d['patches'][2]['z'] = '0.5'  # the plane half a unit above the blend's end
+    d['patches'].append({'name': 'far', 'kind': 'surface', 'v_range': [0, '2*pi'], 't_range': [0, 1],
+                         'x': 'cos(v)', 'y': 'sin(v)', 'z': '1e10 + t'})
+
+# Cases measured by the join certificate: `check` in the CLI, a solve with joins in the module.
+checked = [
+    ('gap-hidden-by-far-patch', with_(fig4a, gap_hidden_by_far_patch), 16, 'InvalidField', "is not the border u1 of 'blend': they are 0.5 apart",
+     'issue 38 #6: a 0.5 gap passed as G0 5e-11 once a patch at z = 1e10 grew the scene (tolerances were the whole scene\'s)'),
+]
+
 cases = [
     # file, scene (dict or raw text), grid, code, message substring, why
     ('float-overflow', with_(vase, set_boundary_x), 16, 'NonFinite', 'beyond what a float holds',
@@ -95,11 +108,13 @@ cases = [
 
 os.makedirs(os.path.join(HERE, 'scenes'), exist_ok=True)
 manifest = {'format': 'pdesurf-hostile-scenes', 'version': 1, 'scenes': []}
-for name, scene, grid, code, message, why in cases:
-    text = scene if isinstance(scene, str) else json.dumps(scene, indent=1)
-    with open(os.path.join(HERE, 'scenes', name + '.json'), 'w') as f:
-        f.write(text + '\n')
-    manifest['scenes'].append({'name': name, 'file': f'scenes/{name}.json', 'grid': grid, 'code': code, 'message': message, 'why': why})
+for command, group in (('export', cases), ('check', checked)):
+    for name, scene, grid, code, message, why in group:
+        text = scene if isinstance(scene, str) else json.dumps(scene, indent=1)
+        with open(os.path.join(HERE, 'scenes', name + '.json'), 'w') as f:
+            f.write(text + '\n')
+        manifest['scenes'].append({'name': name, 'file': f'scenes/{name}.json', 'command': command, 'grid': grid, 'code': code,
+                                   'message': message, 'why': why})
 with open(os.path.join(HERE, 'scenes.json'), 'w') as f:
     f.write(json.dumps(manifest, indent=2, ensure_ascii=False) + '\n')
-print(len(cases), 'scenes written')
+print(len(cases) + len(checked), 'scenes written')

@@ -81,11 +81,10 @@ struct Verdict {
 Verdict certify(const json& j) {
   const Scene scene = parseScene(j.dump());
   const auto solved = solveScene(scene);
-  const double size = sceneSizeOf(solved);
   Verdict v;
-  for (const JoinResult& r : certifyJoins(scene, solved, size)) {
+  for (const JoinResult& r : certifyJoins(scene, solved)) {
     ++v.joins;
-    v.g0 = std::max(v.g0, r.g0), v.g0abs = std::max(v.g0abs, r.g0 * size), v.g1 = std::max(v.g1, r.g1Deg);
+    v.g0 = std::max(v.g0, r.g0), v.g0abs = std::max(v.g0abs, r.g0 * r.size), v.g1 = std::max(v.g1, r.g1Deg);
     v.ok = v.ok && r.ok && r.level == 1;
   }
   return v;

@@ -15,7 +15,6 @@ struct Fitted {
   Scene scene;
   std::vector<SolvedPatch> solved;
   std::vector<PatchFit> fits;
-  double size = 0;
 };
 
 // The scene is owned here: solved patches point into it.
@@ -24,7 +23,6 @@ std::unique_ptr<Fitted> fitted(const std::string& file) {
   f->scene = parseScene(testing::readText(testing::examplePath(file)));
   f->solved = solveScene(f->scene);
   f->fits = fitScene(f->solved, SceneFitOptions{});
-  f->size = sceneSizeOf(f->solved);
   return f;
 }
 
@@ -35,8 +33,8 @@ TEST_CASE("fitted joins: the faces' joins are the surfaces', within both deviati
   for (const char* file : {"you2004-fig4c.json", "wu2015-fig4.json", "you2004-fig5.json"}) {
     CAPTURE(file);
     const auto f = fitted(file);
-    const std::vector<JoinResult> surfaces = certifyJoins(f->scene, f->solved, f->size);
-    const std::vector<FittedJoin> faces = certifyFittedJoins(f->scene, f->solved, f->fits, f->size);
+    const std::vector<JoinResult> surfaces = certifyJoins(f->scene, f->solved);
+    const std::vector<FittedJoin> faces = certifyFittedJoins(f->scene, f->solved, f->fits);
     REQUIRE(faces.size() == surfaces.size());
     REQUIRE(!faces.empty());
     for (size_t k = 0; k < faces.size(); ++k) {
@@ -46,7 +44,7 @@ TEST_CASE("fitted joins: the faces' joins are the surfaces', within both deviati
       CHECK(j.faces.patch == surfaces[k].patch);
       CHECK(j.faces.level == surfaces[k].level);
       CHECK(j.faces.ok);
-      CHECK(j.faces.g0 * f->size <= j.allowedGap);
+      CHECK(j.faces.g0 * j.faces.size <= j.allowedGap);
       if (j.faces.level >= 1) CHECK(j.faces.g1Deg <= 0.01);
     }
   }
@@ -72,7 +70,7 @@ TEST_CASE("fitted joins: a face moved off its neighbour, or turned at its border
     for (int j = 0; j < b.countV; ++j) b.pole(1, j) = moved[size_t(j)];
   }
   bool failed = false;
-  for (const FittedJoin& j : certifyFittedJoins(f->scene, f->solved, f->fits, f->size))
+  for (const FittedJoin& j : certifyFittedJoins(f->scene, f->solved, f->fits))
     if (j.faces.patch == "blend" && j.faces.end == "u0") failed = !j.faces.ok;
   CHECK(failed);
 }

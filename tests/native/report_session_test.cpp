@@ -1,7 +1,8 @@
 // The report session (cpp/analysis/report_session.cpp): part by part, the same report as the
 // one-off checkScene and measureBodies, bit for bit, on every kind of scene; after an edit it
-// measures again exactly the parts whose surfaces, declared joins or scene size changed and
-// still equals a fresh report of the edited scene.
+// measures again exactly the parts whose surfaces or declared joins changed (a join's
+// tolerances are its own: a far patch moved keeps every join) and still equals a fresh report
+// of the edited scene.
 #include <doctest.h>
 
 #include <nlohmann/json.hpp>
@@ -24,6 +25,7 @@ void sameJoins(const std::vector<JoinResult>& a, const std::vector<JoinResult>& 
     CHECK(a[i].surface == b[i].surface);
     CHECK(a[i].edge == b[i].edge);
     CHECK(a[i].level == b[i].level);
+    CHECK(a[i].size == b[i].size);
     CHECK(a[i].g0 == b[i].g0);
     CHECK(a[i].g1Deg == b[i].g1Deg);
     CHECK(a[i].g2Rel == b[i].g2Rel);
@@ -109,4 +111,25 @@ TEST_CASE("report session: an edit measures again only the parts it changed, and
   CHECK(session.partsKept() > 0);
   CHECK(session.partsMeasured() + session.partsKept() == parts);
   sameAsOneOff(session, edited, solvedEdited, 0);
+}
+
+TEST_CASE("report session: moving a far patch (the scene's size changes) keeps every join; only that patch and the bodies are measured") {
+  json j = json::parse(readText(examplePath("you2004-fig4a.json")));
+  j["parameters"]["far"] = {{"value", 40.0}, {"min", 0.0}, {"max", 1e6}};
+  j["patches"].push_back({{"name", "far"}, {"kind", "surface"}, {"v_range", {0, "2*pi"}}, {"t_range", {0, 1}},
+                          {"x", "cos(v)"}, {"y", "sin(v)"}, {"z", "far + t"}});
+  ReportSession session;
+  const Scene first = parseScene(j.dump());
+  const auto solvedFirst = solveScene(first);
+  session.begin(first, solvedFirst);
+  runAll(session);
+  j["parameters"]["far"]["value"] = 1e5;
+  const Scene edited = parseScene(j.dump());
+  const auto solvedEdited = solveScene(edited);
+  session.begin(edited, solvedEdited);
+  runAll(session);
+  CHECK(session.report().sceneSize > 1e4);
+  CHECK(session.partsMeasured() == 3);  // the far patch's seam test and face, the bodies
+  sameAsOneOff(session, edited, solvedEdited, 0);
+  for (const JoinResult& r : session.report().joins) CHECK(r.size < 10);  // the blend's and its edge's
 }
