@@ -29,6 +29,20 @@ void GeneralFunction::evalMany(const double* v, size_t n, int k, double* out) co
   programs_[k]->run(v, nullptr, n, out);
 }
 
+void GeneralFunction::evalManyUpTo(const double* v, size_t n, int maxK, double* const* outs) const {
+  if (maxK > 2) {
+    for (int k = 0; k <= maxK; ++k) evalMany(v, n, k, outs[k]);
+    return;
+  }
+  if (static_cast<int>(upTo_.size()) <= maxK) upTo_.resize(maxK + 1);
+  if (!upTo_[maxK]) {
+    std::vector<Expr> roots;
+    for (int k = 0; k <= maxK; ++k) roots.push_back(derivativeExpr(k));
+    upTo_[maxK] = std::make_shared<const ExprProgram>(roots);
+  }
+  upTo_[maxK]->runAll(v, nullptr, n, outs);
+}
+
 const Expr& GeneralFunction::derivativeExpr(int k) const {
   while (static_cast<int>(derivs_.size()) <= k) {
     const std::string what = "'" + clipText(text_, 200) + "': its derivative of order " + std::to_string(derivs_.size()) + " would";

@@ -27,6 +27,9 @@ class GeneralFunction {
   // shared node once per point, each instruction across the points), which is what a Fourier
   // projection or a grid needs; a fill's loop is a graph of thousands of nodes.
   void evalMany(const double* v, size_t n, int k, double* out) const;
+  // Orders 0..maxK (≤ 2) at once: outs[k][i] = d^k g / dv^k (v[i]); one program whose shared
+  // nodes (the value's sines and powers recur in its derivatives) run once per point.
+  void evalManyUpTo(const double* v, size_t n, int maxK, double* const* outs) const;
   // d^k g / dv^k as an expression, built on first use under the derivative budget (throws
   // Error(TooLarge) when one order would exceed it).
   const Expr& derivativeExpr(int k) const;
@@ -35,6 +38,7 @@ class GeneralFunction {
   std::string text_;
   mutable std::vector<Expr> derivs_;  // derivs_[k] = k-th derivative, grown on demand
   mutable std::vector<std::shared_ptr<const ExprProgram>> programs_;  // programs_[k] runs derivs_[k]
+  mutable std::vector<std::shared_ptr<const ExprProgram>> upTo_;      // upTo_[k] runs derivs_[0..k]
 };
 
 }  // namespace pdesurf

@@ -13,12 +13,13 @@ namespace pdesurf {
 SurfaceOnGrid::SurfaceOnGrid(const SeparableSurface& s, std::vector<double> u) : s_(s), u_(std::move(u)) {
   const Eigen::Index mu = Eigen::Index(u_.size());
   std::vector<double> tab(size_t(mu) * 3);
+  ExpOnGrid exps(u_.data(), int(mu));
   for (int c = 0; c < 3; ++c) {
     const auto& terms = s.component[size_t(c)];
     const Eigen::Index T = Eigen::Index(terms.size());
     for (auto& m : G_[size_t(c)]) m.resize(mu, T);
     for (Eigen::Index t = 0; t < T; ++t) {
-      terms[size_t(t)].G.tabulate(u_.data(), int(mu), 2, tab.data());
+      terms[size_t(t)].G.tabulate(u_.data(), int(mu), 2, tab.data(), nullptr, &exps);
       for (int a = 0; a < 3; ++a)
         for (Eigen::Index i = 0; i < mu; ++i) G_[size_t(c)][size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
       const VFunction& f = terms[size_t(t)].g;

@@ -55,7 +55,16 @@ double UFactor::eval(double u, int m) const {
   return sum;
 }
 
-void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis) const {
+const cplx* ExpOnGrid::values(cplx rate, double shift) {
+  auto [it, fresh] = kept_.try_emplace({{rate.real(), rate.imag()}, shift});
+  if (fresh) {
+    it->second.resize(static_cast<size_t>(count_));
+    for (int i = 0; i < count_; ++i) it->second[size_t(i)] = std::exp(rate * (u_[i] - shift));
+  }
+  return it->second.data();
+}
+
+void UFactor::tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis, ExpOnGrid* exps) const {
   std::fill(out, out + static_cast<size_t>(count) * (maxDerivative + 1), 0.0);
   if (!bernstein.empty()) {
     // Derivative coefficients once; per point the basis values of each lower degree.
@@ -80,6 +89,7 @@ void UFactor::tabulate(const double* u, int count, int maxDerivative, double* ou
   for (const ExpPoly& piece : pieces) {
     for (int m = 0; m <= maxDerivative; ++m) q[m] = derivativePoly(piece.poly, piece.rate, m);
     const bool realPoly = piece.rate == 0.0;
+    const cplx* kept = exps && !realPoly ? exps->values(piece.rate, piece.shift) : nullptr;
     for (int i = 0; i < count; ++i) {
       const double x = u[i] - piece.shift;
       if (realPoly) {
@@ -89,7 +99,7 @@ void UFactor::tabulate(const double* u, int count, int maxDerivative, double* ou
           out[static_cast<size_t>(m) * count + i] += acc;
         }
       } else {
-        const cplx e = std::exp(piece.rate * x);
+        const cplx e = kept ? kept[i] : std::exp(piece.rate * x);
         for (int m = 0; m <= maxDerivative; ++m)
           out[static_cast<size_t>(m) * count + i] += (e * evalPoly(q[m], cplx(x))).real();
       }

@@ -6,12 +6,28 @@
 // positive r is never formed unscaled.
 #pragma once
 #include <complex>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace pdesurf {
 
 class BernsteinOnGrid;
 using cplx = std::complex<double>;
+
+// e^{c (u_i - s)} on one grid of u, kept per (c, s): a surface's terms share their rates (the
+// x, y and z terms of one mode, its cosine and sine terms), so each exponential of a grid line
+// is computed once, not once per term.
+class ExpOnGrid {
+ public:
+  ExpOnGrid(const double* u, int count) : u_(u), count_(count) {}
+  const cplx* values(cplx rate, double shift);
+
+ private:
+  const double* u_;
+  int count_;
+  std::map<std::pair<std::pair<double, double>, double>, std::vector<cplx>> kept_;
+};
 
 struct ExpPoly {
   cplx rate = 0.0;             // c
@@ -35,9 +51,11 @@ class UFactor {
   // The m-th derivative at u.
   double eval(double u, int m = 0) const;
   // out[k * count + i] = G^{(k)}(u[i]) for k = 0..maxDerivative. Derivative polynomials are
-  // formed once per piece, the exponential once per point and piece. A Bernstein-form factor
-  // takes its basis values from `basis` (the same points) when given, shared with other terms.
-  void tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis = nullptr) const;
+  // formed once per piece, the exponential once per point and piece, or taken from `exps` (the
+  // same points) when given, shared with other terms. A Bernstein-form factor takes its basis
+  // values from `basis` (the same points) when given, shared with other terms.
+  void tabulate(const double* u, int count, int maxDerivative, double* out, BernsteinOnGrid* basis = nullptr,
+                ExpOnGrid* exps = nullptr) const;
 };
 
 }  // namespace pdesurf

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "basis/general_function.hpp"
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
 
@@ -38,6 +39,7 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
   static const char* axis[3] = {"x", "y", "z"};
   // Bézier patches: every term shares its Bernstein basis on each grid line.
   BernsteinOnGrid uBasis(t.u.data(), nu + 1), vBasis(t.v.data(), nv + 1);
+  ExpOnGrid uExps(t.u.data(), nu + 1);
   auto vFactor = [&](const VFunction& g, int j, int d) {
     if (g.family != Family::Bernstein) return g.eval(t.v[j], d);
     if (d > g.degree) return 0.0;
@@ -61,17 +63,19 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
     t.vTab[c].assign(static_cast<size_t>(nv + 1) * D * T, 0.0);
     for (int k = 0; k < T; ++k) {
       double* uk = t.uTab[c].data() + static_cast<size_t>(D * k) * (nu + 1);
-      terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk, &uBasis);
+      terms[k].G.tabulate(t.u.data(), nu + 1, maxDerivative, uk, &uBasis, &uExps);
       bool finite = true;
       for (int i = 0; i < D * (nu + 1); ++i) finite = finite && std::isfinite(uk[i]);
-      const bool many = terms[k].g.family == Family::General;  // one program run per order over the grid line
-      for (int d = 0; d < D && many; ++d) {
-        column.resize(nv + 1);
-        terms[k].g.evalMany(t.v.data(), nv + 1, d, column.data());
-        for (int j = 0; j <= nv; ++j) {
-          t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = column[j];
-          finite = finite && std::isfinite(column[j]);
-        }
+      const bool many = terms[k].g.family == Family::General;  // one program run over the grid line, every order
+      if (many) {
+        column.resize(static_cast<size_t>(nv + 1) * D);
+        double* outs[3] = {column.data(), column.data() + (nv + 1), column.data() + 2 * (nv + 1)};
+        terms[k].g.general->evalManyUpTo(t.v.data(), nv + 1, D - 1, outs);
+        for (int d = 0; d < D; ++d)
+          for (int j = 0; j <= nv; ++j) {
+            t.vTab[c][static_cast<size_t>(j) * D * T + D * k + d] = outs[d][j];
+            finite = finite && std::isfinite(outs[d][j]);
+          }
       }
       const Family family = terms[k].g.family;
       const bool bernstein = family == Family::Bernstein, trigonometric = family == Family::Cos || family == Family::Sin;
