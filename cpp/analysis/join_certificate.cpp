@@ -156,7 +156,7 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   r.end = std::string(m.alongU ? "v" : "u") + (m.end ? "1" : "0");
   r.surface = primary.name;
   // A trimmed surface's edge is its trimline (t = 0 after the trim): name the border it replaces.
-  r.edge = m.curve ? std::string("curve replacing ") + (m.replacesT1 ? "t1" : "t0") : source.name;
+  r.edge = m.curve ? std::string("curve replacing ") + (m.replacesT1 ? "t1" : "t0") : m.namedT >= 0 ? (m.namedT ? "t1" : "t0") : source.name;
   r.level = promisedLevel(*target.patch, m.alongU ? 0 : m.end);
   // The target's border parameter runs over its own range (a fill's side: its part of it); the
   // primary's v over the given interval, else (PDE) the same v as the target, else (Bézier)

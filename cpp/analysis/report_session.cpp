@@ -10,7 +10,7 @@ namespace {
 // A declared join's own fields as text: a part keyed on it is measured again when any changes.
 std::string meetsIdentity(const Meets& m) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "|%d%d%d%d%d%d%d%d|%a|%a|%a|%a|", m.end, m.alongU, m.atT1, m.curve, m.replacesT1, m.reversed,
+  std::snprintf(buf, sizeof buf, "|%d%d%d%d%d%d%d%d%d|%a|%a|%a|%a|", m.end, m.alongU, m.atT1, m.curve, m.replacesT1, m.namedT, m.reversed,
                 m.sourceEdge, m.eased, m.v0, m.v1, m.targetFrom, m.targetTo);
   return m.patch + buf + m.by;
 }

@@ -191,6 +191,7 @@ void recordJoin(const DerivedEnd& d, bool trimmed) {
   m.end = d.end;
   m.atT1 = ref.curve ? false : trimmed ? true : ref.atT1;
   m.curve = ref.curve, m.replacesT1 = ref.curve && ref.atT1;
+  if (trimmed && !ref.curve) m.namedT = ref.atT1 ? 1 : 0;
   m.by = ref.path;
   for (const Meets& have : d.surface->meets) {
     if (have.patch != m.patch || have.end != m.end || have.alongU) continue;

@@ -72,8 +72,11 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
   if (j.contains("normal")) {
     fill.normalGiven = true;
     fill.normal = vectorField(j["normal"], path + ".normal", r);
-    if (!(fill.normal.norm() > 0)) fail(ErrorCode::InvalidField, path + ".normal", "the zero vector has no direction");
-    fill.normal.normalize();
+    // Scaled by its largest coordinate first: [1e200, 0, 1e200] has a direction though its
+    // norm overflows, and [0, 0, 1e-200] one though its square underflows.
+    const double largest = fill.normal.cwiseAbs().maxCoeff();
+    if (!(largest > 0)) fail(ErrorCode::InvalidField, path + ".normal", "the zero vector has no direction");
+    fill.normal = (fill.normal / largest).normalized();
   }
   if (j.contains("height")) {
     fill.height = r.number(j["height"], path + ".height");

@@ -55,7 +55,9 @@ inline std::string stringField(const json& j, const std::string& path, size_t ma
   return s;
 }
 
-// An integer in lo..hi, read without wrapping (get<int> would read 4294967297 as 1).
+// An integer in lo..hi, read without wrapping (get<int> would read 4294967297 as 1). A number
+// written with a fraction or an exponent whose value is a whole number (4.0, 4e0) is that
+// integer: JSON does not tell them apart, nor does the page, which writes 4.0 as 4.
 inline int integerField(const json& j, const std::string& path, long long lo, long long hi) {
   bool ok = false;
   long long v = 0;
@@ -66,6 +68,10 @@ inline int integerField(const json& j, const std::string& path, long long lo, lo
   } else if (j.is_number_integer()) {
     v = j.get<long long>();
     ok = true;
+  } else if (j.is_number_float()) {
+    const double d = j.get<double>();
+    ok = d >= static_cast<double>(lo) && d <= static_cast<double>(hi) && d == static_cast<double>(static_cast<long long>(d));
+    v = ok ? static_cast<long long>(d) : 0;
   }
   if (!ok || v < lo || v > hi)
     fail(ErrorCode::InvalidField, path, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi));

@@ -1,6 +1,7 @@
 #include "scene/patch_graph.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -15,6 +16,12 @@ std::string number(double x) {
   std::ostringstream o;
   o << x;
   return o.str();
+}
+
+std::string exact(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
 }
 
 size_t indexOf(const Scene& scene, const std::string& name, const std::string& path, const std::string& self) {
@@ -46,10 +53,20 @@ void linkEnd(Scene& scene, size_t index, int end) {
   const size_t si = indexOf(scene, ref.patch, ref.path, blend.name);
   Patch& source = scene.patches[si];
   checkEdge(source, ref.patchEdge, ref.path, false);
-  if (source.kind == PatchKind::Pde && (source.pde.v0 != blend.pde.v0 || source.pde.v1 != blend.pde.v1))
+  if (source.kind == PatchKind::Pde && (source.pde.v0 != blend.pde.v0 || source.pde.v1 != blend.pde.v1)) {
+    // As many digits as tell the two apart (one ulp apart, 6 digits print the same numbers).
+    const auto differs = [](double a, double b) { return number(a) != number(b) ? std::make_pair(number(a), number(b)) : std::make_pair(exact(a), exact(b)); };
+    const auto [a0, b0] = differs(blend.pde.v0, source.pde.v0);
+    const auto [a1, b1] = differs(blend.pde.v1, source.pde.v1);
     fail(ErrorCode::InvalidField, ref.path + ".patch",
-         "the v_range [" + number(blend.pde.v0) + ", " + number(blend.pde.v1) + "] differs from '" + source.name + "''s [" + number(source.pde.v0) +
-             ", " + number(source.pde.v1) + "]: a chain shares v with the patch it continues");
+         "the v_range [" + a0 + ", " + a1 + "] differs from '" + source.name + "''s [" + b0 + ", " + b1 + "]: a chain shares v with the patch it continues");
+  }
+  // Both ends on one edge: three sheets would meet along it (version 3 refuses the same for a
+  // surface's border).
+  const EndReference& other = blend.ends[1 - end];
+  if (end == 1 && other.given && other.patch == ref.patch && other.patchEdge == ref.patchEdge)
+    fail(ErrorCode::InvalidField, ref.path + ".at",
+         "continues " + edgeName(source, ref.patchEdge) + " of '" + source.name + "', as " + other.path + " does: the patch would start and end on the same edge");
   if (ref.reverse && source.kind != PatchKind::Bezier) fail(ErrorCode::InvalidField, ref.path + ".reverse", "only a Bézier border can be run backwards");
   depend(blend, source.name);
   Meets m;
@@ -83,6 +100,8 @@ void linkFill(Scene& scene, size_t index) {
     m.atT1 = b.edge % 2 == 1;
     m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
     m.curve = b.curve.curve, m.replacesT1 = b.curve.curve && b.curve.atT1;  // for the certificate's label
+    // The far border of a trimmed surface, named as the scene names it (locateBorder kept it).
+    if (source.kind == PatchKind::Primary && source.primary.trimmed && !b.curve.curve) m.namedT = b.curve.atT1 ? 1 : 0;
     m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
     const auto part = fillSideRange(k, n);
     m.targetFrom = part[0], m.targetTo = part[1];

@@ -42,10 +42,10 @@ std::vector<double> alphaOf(const ComponentOperator& op) {
 // Parses one operator object; `component` selects x, y or z from 3-arrays (single form).
 ComponentOperator parseOperator(const json& o, const std::string& path, const Resolver& r, int component) {
   const json& order = require(o, "order", path);
-  if (!order.is_number_integer() || (order != 2 && order != 4 && order != 6))
-    fail(ErrorCode::InvalidField, path + ".order", "order must be 2, 4 or 6");
+  const double given = order.is_number() ? order.get<double>() : 0.0;  // 4.0 is 4 (JSON does not tell them apart)
+  if (given != 2 && given != 4 && given != 6) fail(ErrorCode::InvalidField, path + ".order", "order must be 2, 4 or 6");
   ComponentOperator op;
-  op.order = order.get<int>();
+  op.order = static_cast<int>(given);
   auto value = [&](const json& j, const std::string& p) {
     return component < 0 || !j.is_array() ? r.number(j, p) : r.perComponent(j, p)[component];
   };

@@ -86,6 +86,10 @@ struct Meets {
   // Scene version 3, an end along a curve t = tau(v): the trimmed surface starts at the curve
   // (atT1 false); replacesT1 says which border the curve replaces (for the certificate's label).
   bool curve = false, replacesT1 = false;
+  // A border of a surface trimmed along a curve, as the scene names it (0: t0, 1: t1): the
+  // trimmed surface's t runs from the curve, so atT1 is its far border whatever its name.
+  // -1: atT1 is the name.
+  int namedT = -1;
   // The primary's v-interval that the patch's border parameter maps onto linearly; unset
   // (NaN): a PDE blend shares v with the primary, a Bézier border maps [0, 1] onto v_range.
   double v0 = NAN, v1 = NAN;

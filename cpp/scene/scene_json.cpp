@@ -200,11 +200,12 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (!format.is_string() || format.get<std::string>() != "pdesurf-scene")
     fail(ErrorCode::InvalidField, "format", "expected \"pdesurf-scene\"");
   const json& version = require(doc, "version", "scene");
-  if (!version.is_number_integer() || version.get<long long>() < 1 || version.get<long long>() > 4)
-    fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 to 4");
+  const bool known = version.is_number() && version.get<double>() >= 1 && version.get<double>() <= 4 &&
+                     version.get<double>() == static_cast<double>(static_cast<int>(version.get<double>()));
+  if (!known) fail(ErrorCode::InvalidField, "version", "this build reads scene versions 1 to 4");
   allowOnly(doc, "scene", {"format", "version", "id", "title", "description", "source", "parameters", "patches"});
   Scene scene;
-  scene.version = static_cast<int>(version.get<long long>());
+  scene.version = static_cast<int>(version.get<double>());  // 4.0 and 4e0 are 4, as the page reads them
   if (doc.contains("title")) scene.title = stringField(doc["title"], "title");
   if (doc.contains("id")) stringField(doc["id"], "id", 64);
   if (doc.contains("description")) stringField(doc["description"], "description", 2000, true);

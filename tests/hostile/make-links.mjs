@@ -39,6 +39,10 @@ const cases = [
   ['no-scene', link(deflate('{"grid": {"nu": 8, "nv": 8}}')), 'refuse', 'no scene'],
   ['empty-data', 's=1.', 'refuse', 'no data'],
   ['bad-base64', 's=1.ab$c', 'refuse', 'a character outside base64url'],
+  // Issue 38 #13: the page solved these (its JSON has one kind of number) and decode-link refused them.
+  ['scene-version-2.0', link(deflate(good.replace('"version":2', '"version":2.0'))), 'open', 'a scene version written 2.0 is version 2, as JSON and the page read it'],
+  ['scene-version-2e0', link(deflate(good.replace('"version":2', '"version":2e0'))), 'open', 'a scene version written 2e0 is version 2'],
+  ['scene-version-2.5', link(deflate(good.replace('"version":2', '"version":2.5'))), 'refuse', 'a scene version 2.5 is none'],
 ];
 
 const manifest = { format: 'pdesurf-hostile-links', version: 1, links: [] };

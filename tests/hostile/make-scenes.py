@@ -62,6 +62,14 @@ def gap_hidden_by_far_patch(d):
     d['patches'].append({'name': 'far', 'kind': 'surface', 'v_range': [0, '2*pi'], 't_range': [0, 1],
                          'x': 'cos(v)', 'y': 'sin(v)', 'z': '1e10 + t'})
 
+bottle = load('examples/bottle-solid.json')
+def chain_both_ends_one_edge(d):
+    d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, '2*pi'],
+                         'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'patch': 'shoulder', 'at': 'u1'}}})
+def chain_v_range_one_ulp(d):
+    d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, 6.283185307179587],  # 2*pi is ...586
+                         'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'surface': 'neck', 'at': 't1'}}})
+
 # Cases measured by the join certificate: `check` in the CLI, a solve with joins in the module.
 checked = [
     ('gap-hidden-by-far-patch', with_(fig4a, gap_hidden_by_far_patch), 16, 'InvalidField', "is not the border u1 of 'blend': they are 0.5 apart",
@@ -104,6 +112,10 @@ cases = [
      "a Bezier border mapped onto v in [0.5, 2.5] of a strip drawn over [-1.5, 1.5]: was certified as a passing join"),
     ('deep-1000', '{"format": ' + '[' * 1000 + ']' * 1000 + '}', 16, 'TooLarge', 'nested deeper',
      '1,000 nested arrays'),
+    ('chain-both-ends-one-edge', with_(bottle, chain_both_ends_one_edge), 16, 'InvalidField', 'would start and end on the same edge',
+     'issue 38 #11: both ends of one patch continuing u1 of the shoulder (three sheets on one edge) were accepted'),
+    ('chain-v-range-one-ulp', with_(bottle, chain_v_range_one_ulp), 16, 'InvalidField', '6.2831853071795871] differs from',
+     'issue 38 messages: a v_range one ulp off 2*pi was "[0, 6.28319] differs from [0, 6.28319]"'),
 ]
 
 os.makedirs(os.path.join(HERE, 'scenes'), exist_ok=True)

@@ -160,3 +160,36 @@ TEST_CASE("a fill's trimline curve: one curve per surface, shared with a blend's
   CHECK(parseErrorOf(scene({top, blend, other}, "t0")) ==
         "InvalidField: patches[4].borders[0].at: 'blend' is a pde patch; a trimline curve is drawn on a \"surface\" patch (expressions in t and v)");
 }
+
+TEST_CASE("a fill on the far border of a surface a blend trims: glued to that border, labelled by its own name; the replaced one refused") {
+  // Issue 38 #5: a cylinder trimmed by a blend along t = 0.5 + 0.1 sin v (replacing t1), a cap
+  // on its t0. The cap must close the bottom circle (z = 0) and say "t0", not the trimmed
+  // parametrisation's "t1"; a cap on the replaced t1 is refused.
+  const auto scene = [](const char* capAt, bool capFirst) {
+    const json tube = {{"name", "A"}, {"kind", "surface"}, {"t_range", {0, 2}}, {"v_range", {0, "2*pi"}}, {"x", "cos(v)"}, {"y", "sin(v)"}, {"z", "t"}};
+    const json flange = {{"name", "B"}, {"kind", "surface"}, {"t_range", {0, 1}}, {"v_range", {0, "2*pi"}}, {"x", "(2 + t)*cos(v)"}, {"y", "(2 + t)*sin(v)"}, {"z", "1.5"}};
+    const json blend = {{"name", "blend"}, {"kind", "pde"}, {"v_range", {0, "2*pi"}},
+                        {"ends", {{"u0", {{"surface", "A"}, {"at", {{"t", "0.5 + 0.1*sin(v)"}, {"replaces", "t1"}}}}}, {"u1", {{"surface", "B"}, {"at", "t0"}}}}}};
+    const json cap = {{"name", "cap"}, {"kind", "fill"}, {"borders", {{{"patch", "A"}, {"at", capAt}}}}};
+    json patches = capFirst ? json::array({tube, flange, cap, blend}) : json::array({tube, flange, blend, cap});
+    return json{{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}}.dump();
+  };
+  for (bool capFirst : {false, true}) {
+    CAPTURE(capFirst);
+    const Scene s = parseScene(scene("t0", capFirst));
+    const auto solved = solveScene(s);
+    const SeparableSurface& cap = solvedNamed(solved, "cap").surface;
+    for (double v = 0.1; v < 6.2; v += 0.5) {
+      const Eigen::Vector3d x = evalPoint(cap, 0.0, v);
+      CHECK(std::abs(x.z()) < 1e-12);                        // on the bottom circle
+      CHECK(std::abs(std::hypot(x.x(), x.y()) - 1) < 1e-12);
+    }
+    const SceneReport r = checkScene(s, solved, 0);
+    CHECK(r.ok);
+    bool labelled = false;
+    for (const JoinResult& j : r.joins)
+      if (j.patch == "cap") labelled = j.surface == "A" && j.edge == "t0";
+    CHECK(labelled);
+    CHECK(parseErrorOf(scene("t1", capFirst)).find("meets t1 of 'A', which patches[") != std::string::npos);
+  }
+}

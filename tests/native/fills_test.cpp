@@ -110,6 +110,22 @@ TEST_CASE("a flat hole gets a flat fill inside it; a closed border gets a cap") 
   CHECK(r.ok);
 }
 
+TEST_CASE("a fill's normal is a direction at any scale: [1e200, 0, 1e200] tilts it as [1, 0, 1] does, [0, 0, 1e-200] is [0, 0, 1]") {
+  // Issue 38 #9: [1e200, 0, 1e200] overflowed to a zero norm and was dropped without a word.
+  const auto centreWith = [](const json& normal) {
+    json j = polygonScene(5, 0.2, -0.1, 0.05, 0.3);
+    j["patches"].back()["normal"] = normal;
+    const Scene scene = parseScene(j.dump());
+    const auto solved = solveScene(scene);
+    return evalPoint(solvedNamed(solved, "fill").surface, 1.0 - 1e-3, 0.0);
+  };
+  const Eigen::Vector3d tilted = centreWith({1, 0, 1}), up = centreWith({0, 0, 1});
+  CHECK((tilted - up).norm() > 1e-3);  // the normal does tilt the fill
+  CHECK((centreWith({1e200, 0, 1e200}) - tilted).norm() < 1e-12);
+  CHECK((centreWith({0, 0, 1e-200}) - up).norm() < 1e-12);
+  CHECK_THROWS_WITH_AS(centreWith({0, 0, 0}), doctest::Contains("the zero vector has no direction"), Error);
+}
+
 TEST_CASE("bad loops are named errors and nothing is drawn") {
   auto solveError = [](const json& scene) -> std::string {
     try {
