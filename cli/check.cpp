@@ -8,6 +8,7 @@
 #include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
+#include "surface/mesh.hpp"
 #include "methods/measures.hpp"
 
 namespace pdesurf::cli {
@@ -82,6 +83,11 @@ int runCheck(const Options& o, std::ostream& out) {
   const int grid = o.gridGiven ? std::max(o.nu, o.nv) : 64;
   checkSceneGrid(scene, grid, grid);
   const auto solved = solveScene(scene);
+  // The surfaces as the page and export draw them, first: what cannot be drawn (beyond a
+  // float, not finite) is the same NonFinite here (issue 38 #12: check measured joins of it).
+  Mesh drawn;
+  for (const SolvedPatch& sp : solved) tessellateInto(sp.surface, grid, grid, drawn);
+  drawn = Mesh{};
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);
   const std::vector<InteriorCreases> cr = creases(solved, r);

@@ -35,6 +35,11 @@ constexpr size_t kBezierAssembly = size_t{1} << 29;
 // surfaces they trim along a curve. Counted while the graph is built (expr/budget.hpp): the
 // first node over it stops the derivation with TooLarge. Measured figures: docs/limits.md.
 constexpr size_t kDerivedNodes = 200000;
+// A chain's or a fill border's power (the cross derivative's scale) and a fill's height are
+// within ±kEndScale, and a fill's given centre within kEndScale loop radii of the loop: past
+// them the shape is a spike, not a design, and p² overflowed (issue 38: a power of 1e300 was
+// reported as a 0.8 gap by check and as NonFinite by export).
+constexpr double kEndScale = 100;
 // A derived condition's text (shown in the page, typed by detach) is elided past this.
 constexpr size_t kDerivedTextChars = 2000;
 

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "common/limits.hpp"
+
 namespace pdesurf::scene_json {
 
 Continuity continuityOf(const json& j, const std::string& path) {
@@ -56,6 +58,7 @@ EndReference parseChainEnd(const json& j, const std::string& path, const Resolve
   }
   e.power = constant(j.contains("power") ? r.number(j["power"], path + ".power") : 1.0);
   if (!(e.power->value > 0)) fail(ErrorCode::InvalidField, path + ".power", "must be positive");
+  if (!(e.power->value <= limits::kEndScale)) fail(ErrorCode::InvalidField, path + ".power", "at most 100 (past it a spike, not a blend)");
   e.surfaceScale = true;
   return e;
 }

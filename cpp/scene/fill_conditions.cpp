@@ -16,9 +16,12 @@
 // decaying profile (methods/boundary_lift.hpp).
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
 
 #include "basis/general_function.hpp"
+
 #include "common/errors.hpp"
+#include "common/limits.hpp"
 #include "scene/chain_conditions.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/fill_corners.hpp"
@@ -89,6 +92,12 @@ void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) 
     for (int i = 0; i < kPerSide; ++i) radius += (s.x[i] - centroid).norm();
   radius /= static_cast<double>(n * kPerSide);
 
+  if (loop.centreGiven && !((loop.centre - centroid).stableNorm() <= limits::kEndScale * radius)) {
+    char why[200];
+    std::snprintf(why, sizeof why, "is %.3g loop radii from the loop's centroid (at most %.0f): the fill would be a spike",
+                  (loop.centre - centroid).stableNorm() / radius, limits::kEndScale);
+    fail(ErrorCode::InvalidField, loop.path + ".centre", why);
+  }
   Eigen::Vector3d normal = loop.normal;
   if (!loop.normalGiven) {
     if (!(area.norm() > 1e-9 * radius * radius))

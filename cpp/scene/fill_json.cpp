@@ -2,6 +2,7 @@
 // patches. Read here; its conditions come from the solved borders (scene/fill_conditions.cpp).
 #include <cmath>
 
+#include "common/limits.hpp"
 #include "scene/ends_json.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
@@ -42,6 +43,7 @@ LoopBorder parseBorder(const json& j, const std::string& path, const Resolver& r
   }
   const double power = j.contains("power") ? r.number(j["power"], path + ".power") : 1.0;
   if (!(power > 0)) fail(ErrorCode::InvalidField, path + ".power", "must be positive");
+  if (!(power <= limits::kEndScale)) fail(ErrorCode::InvalidField, path + ".power", "at most 100 (past it a spike, not a fill)");
   b.power = constant(power);
   return b;
 }
@@ -80,7 +82,7 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
   }
   if (j.contains("height")) {
     fill.height = r.number(j["height"], path + ".height");
-    if (std::abs(fill.height) > 100) fail(ErrorCode::InvalidField, path + ".height", "outside [-100, 100]");
+    if (!(std::abs(fill.height) <= limits::kEndScale)) fail(ErrorCode::InvalidField, path + ".height", "outside [-100, 100]");
   }
   // The rest is an ordinary pde patch over v in [0, 2π] whose conditions are all derived.
   const int order = fill.continuity == Continuity::Position ? 2 : fill.continuity == Continuity::Tangency ? 4 : 6;

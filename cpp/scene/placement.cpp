@@ -1,6 +1,7 @@
 #include "scene/placement.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "common/errors.hpp"
 
@@ -67,6 +68,30 @@ Placement parsePlacement(const json& j, const std::string& path, const Resolver&
   p.linear = rotation * scale.asDiagonal();
   if (!p.linear.allFinite() || !p.translate.allFinite()) fail(ErrorCode::NonFinite, path, "the placement is not finite");
   return p;
+}
+
+void checkPlacementReach(const Placement& p, const std::array<Expr, 3>& xyz, double t0, double t1, double v0, double v1,
+                         const std::string& path) {
+  const double far = p.translate.cwiseAbs().maxCoeff();
+  if (far == 0.0) return;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (int i = 0; i <= 8; ++i)
+    for (int k = 0; k <= 8; ++k) {
+      const double vars[2] = {v0 + (v1 - v0) * k / 8, t0 + (t1 - t0) * i / 8};  // ExprVar V, U (t)
+      Eigen::Vector3d x;
+      for (int c = 0; c < 3; ++c) x[c] = evaluate(*xyz[c], vars);
+      if (!x.allFinite()) return;  // the surface's own checks name it
+      x = p.linear * x;
+      lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    }
+  const double size = (hi - lo).norm();
+  if (!(size > 0) || far <= kPlacementReach * size) return;
+  char why[320];
+  std::snprintf(why, sizeof why,
+                "%.6g is %.3g times the surface's size (%.6g): that far from the origin double precision rounds its points by more than the "
+                "joins' tolerance (1e-9 of a size); place it within %.0e sizes, or model it nearer the origin",
+                far, far / size, size, kPlacementReach);
+  fail(ErrorCode::InvalidField, path + ".translate", why);
 }
 
 std::array<Expr, 3> applyPlacement(const Placement& p, const std::array<Expr, 3>& xyz) {

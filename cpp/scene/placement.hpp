@@ -25,4 +25,14 @@ Placement parsePlacement(const json& j, const std::string& path, const Resolver&
 // The three coordinates' expressions placed: each a linear combination of the originals.
 std::array<Expr, 3> applyPlacement(const Placement& p, const std::array<Expr, 3>& xyz);
 
+// How far a patch may be moved, in its own sizes: beyond it, double precision rounds its
+// placed points by more than the join certificate's G0 tolerance (1e-9 of a join's size), and a
+// blend derived from it silently loses its shape (issue 38: a plane at x = 1e16 put the
+// sphere fillet's ring 1.4 off, certified).
+constexpr double kPlacementReach = 1e6;
+// Refuses (InvalidField at `path`.translate) a translation beyond kPlacementReach times the
+// placed surface's size, sampled at 9 × 9 points of t in [t0, t1], v in [v0, v1].
+void checkPlacementReach(const Placement& p, const std::array<Expr, 3>& xyz, double t0, double t1, double v0, double v1,
+                         const std::string& path);
+
 }  // namespace pdesurf::scene_json

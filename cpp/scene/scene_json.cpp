@@ -143,7 +143,9 @@ void parseSurface(const json& j, const std::string& path, const Resolver& r, int
     xyz[c] = j.contains(kAxis[c]) ? surfaceField(j[kAxis[c]], path + "." + kAxis[c], r) : constant(0.0);
   if (j.contains("placement")) {
     if (version < 4) fail(ErrorCode::InvalidField, path + ".placement", "a placement needs scene version 4");
-    xyz = applyPlacement(parsePlacement(j["placement"], path + ".placement", r), xyz);
+    const Placement placement = parsePlacement(j["placement"], path + ".placement", r);
+    checkPlacementReach(placement, xyz, patch.primary.t0, patch.primary.t1, patch.primary.v0, patch.primary.v1, path + ".placement");
+    xyz = applyPlacement(placement, xyz);
   }
   for (int c = 0; c < 3; ++c) {
     patch.primary.full[c] = xyz[c];

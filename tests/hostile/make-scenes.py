@@ -63,6 +63,10 @@ def gap_hidden_by_far_patch(d):
                          'x': 'cos(v)', 'y': 'sin(v)', 'z': '1e10 + t'})
 
 bottle = load('examples/bottle-solid.json')
+fillet = load('examples/ref-sphere-fillet.json')
+def far_plane(d):
+    d['version'] = 4
+    d['patches'][1]['placement'] = {'translate': [1e16, 0, 0]}
 def chain_both_ends_one_edge(d):
     d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, '2*pi'],
                          'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'patch': 'shoulder', 'at': 'u1'}}})
@@ -112,6 +116,17 @@ cases = [
      "a Bezier border mapped onto v in [0.5, 2.5] of a strip drawn over [-1.5, 1.5]: was certified as a passing join"),
     ('deep-1000', '{"format": ' + '[' * 1000 + ']' * 1000 + '}', 16, 'TooLarge', 'nested deeper',
      '1,000 nested arrays'),
+    ('placement-far-1e16', with_(fillet, far_plane), 16, 'InvalidField', "1e+16 is 1.1e+15 times the surface's size",
+     'issue 38 #7: the plane placed at x = 1e16 put the fillet\'s ring 1.4 off its circle, written with exit 0 and certified'),
+    ('placement-translate-1e300', with_(bottle, lambda d: d['patches'][0].__setitem__('placement', {'translate': [1e300, 0, 0]})), 16, 'InvalidField',
+     'patches[0].placement.translate: 1e+300 is', 'issue 38 #12: check said the loop encloses no area, sample printed 1e300s with exit 0'),
+    ('chain-power-1e300', with_(bottle, lambda d: d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, '2*pi'],
+     'ends': {'u0': {'patch': 'shoulder', 'at': 'u1', 'power': 1e300}, 'u1': {'surface': 'neck', 'at': 't1'}}})), 16, 'InvalidField',
+     'patches[5].ends.u0.power: at most 100', 'issue 38 #12: check said "0.8 apart", export NonFinite; p squared overflowed'),
+    ('fill-centre-1e300', with_(bottle, lambda d: d['patches'][4].__setitem__('centre', [0, 0, 1e300])), 16, 'InvalidField',
+     "patches[4].centre: is 2.63e+300 loop radii", 'issue 38 messages: a centre of 1e300 was reported as "the fill folds"'),
+    ('fill-power-1e300', with_(bottle, lambda d: d['patches'][4]['borders'][0].__setitem__('power', 1e300)), 16, 'InvalidField',
+     'patches[4].borders[0].power: at most 100', 'issue 38 messages: a border power of 1e300 was reported as "does not turn around"'),
     ('chain-both-ends-one-edge', with_(bottle, chain_both_ends_one_edge), 16, 'InvalidField', 'would start and end on the same edge',
      'issue 38 #11: both ends of one patch continuing u1 of the shoulder (three sheets on one edge) were accepted'),
     ('chain-v-range-one-ulp', with_(bottle, chain_v_range_one_ulp), 16, 'InvalidField', '6.2831853071795871] differs from',

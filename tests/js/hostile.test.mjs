@@ -80,6 +80,12 @@ describe('hostile corpus', () => {
       // Every error message is at most 600 characters (docs/limits.md), user text clipped.
       const line = r.stderr.trim().split(`: ${s.code}: `).slice(1).join(`: ${s.code}: `);
       assert.ok(Buffer.byteLength(line) <= 600, `${Buffer.byteLength(line)} bytes`);
+      if (!checked) {
+        // One verdict everywhere: check says what export says (issue 38 #12).
+        const c = cli(['check', file, '--grid', grid]);
+        assert.equal(c.status, 1, `check: exit ${c.status}: ${c.stdout.slice(0, 300)}`);
+        assert.match(c.stderr, new RegExp(`: ${s.code}: `), `check: ${c.stderr}`);
+      }
       const text = fs.readFileSync(file, 'utf8');
       const named = (err) => err.code === s.code && err.message.includes(s.message) && err.message.length <= 600;
       if (checked) {

@@ -129,7 +129,10 @@ function chainField(scene, pick, opts, path) {
   if (!CONTINUITIES.includes(continuity)) throw new Error(`${path}.continuity: must be ${CONTINUITIES.join(', ')}, not ${JSON.stringify(continuity)}`);
   const power = pick.power ?? opts.power ?? 1;
   if (typeof power !== 'number') throw new Error(`${path}.power: an end on a patch takes a number`);
-  if (!(numberField(scene, power, `${path}.power`) > 0)) throw new Error(`${path}.power: must be positive`);
+  const value = numberField(scene, power, `${path}.power`);
+  if (!(value > 0)) throw new Error(`${path}.power: must be positive`);
+  // The solver's bound (cpp/common/limits.hpp kEndScale): past it a spike, and p² overflows.
+  if (!(value <= 100)) throw new Error(`${path}.power: at most 100`);
   return { patch: pick.surface, at: pick.at, continuity, power };
 }
 
