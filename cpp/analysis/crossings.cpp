@@ -83,6 +83,7 @@ int cellDistance(int a, int b, int n, bool closed) {
 }  // namespace
 
 std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
+  grid = std::min(grid, kCrossingGrid);  // bounded before the work
   const int P = static_cast<int>(solved.size());
   std::vector<PatchGrid> grids(P);
   std::vector<Tri> tris;

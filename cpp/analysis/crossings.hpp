@@ -19,6 +19,10 @@ struct Crossing {
   int triangles = 0;  // crossing triangle pairs found
 };
 
+// The test's mesh: at most kCrossingGrid cells a side per patch, whatever grid is asked (the
+// check's grid bounds the drawing, not this test: at 1181² a 3-patch scene took 1.2 GB and 7 s;
+// a crossing that 256² misses is narrower than a 256th of the patch).
+constexpr int kCrossingGrid = 256;
 std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
 
 }  // namespace pdesurf

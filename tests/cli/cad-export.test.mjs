@@ -157,6 +157,16 @@ test('a closed ball beside an open tube: one solid and one open shell in the sam
   }
 });
 
+// Issue 38 #8: no six-sided fill could be exported ("the fit's least-squares system is
+// singular"), even on a flat hexagon that check passed.
+test('a six-sided fill in a curved hexagonal hole: STEP and IGES read back, one open shell', async () => {
+  const scene = join(root, 'tests/fixtures/models/hexagon-fill.json');
+  for (const ext of ['step', 'igs']) {
+    const report = await exportAndReadBack('hexagon-fill', ext, scene);
+    assert.deepEqual([report.solids, report.shells], [0, 1], ext);
+  }
+});
+
 // Random closed models from the space a user reaches: a tube of random radii (a cone frustum,
 // or an elliptic or wavy section), height and placement, its rings capped by fills of 1 to 4
 // sides (a ring split into that many ranges) at random heights, G1 or G2: every one one solid
