@@ -32,6 +32,15 @@ SurfaceOnGrid::SurfaceOnGrid(const SeparableSurface& s, std::vector<double> u) :
   }
 }
 
+double SurfaceOnGrid::pointCost() const {
+  double cost = 1.0;
+  for (int c = 0; c < 3; ++c) {
+    cost += double(s_.component[size_t(c)].size());
+    if (pointwise_[size_t(c)]) cost += double(pointwise_[size_t(c)]->instructions());
+  }
+  return cost;
+}
+
 GridPartials SurfaceOnGrid::at(const std::vector<double>& v, int count) const {
   static const char* axis[3] = {"x", "y", "z"};
   const Eigen::Index mu = Eigen::Index(u_.size()), mv = Eigen::Index(v.size());

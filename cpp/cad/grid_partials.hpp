@@ -25,6 +25,9 @@ class SurfaceOnGrid {
   // The first `count` partials of kFitPartials (1: positions; 5: all) at (u, v); the others empty.
   GridPartials at(const std::vector<double>& v, int count = 5) const;
   const std::vector<double>& u() const { return u_; }
+  // What one point of at() costs, in multiply-adds: the surface's separable terms and its
+  // non-separable part's program instructions (the fit's work budget counts points by it).
+  double pointCost() const;
 
  private:
   const SeparableSurface& s_;

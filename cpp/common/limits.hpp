@@ -40,6 +40,11 @@ constexpr size_t kDerivedNodes = 200000;
 // them the shape is a spike, not a design, and p² overflowed (issue 38: a power of 1e300 was
 // reported as a 0.8 gap by check and as NonFinite by export).
 constexpr double kEndScale = 100;
+// Expression nodes built deriving the chained ends and fills' loops of one solve, summed over
+// its patches (each also within kDerivedNodes): a chain whose every patch carries its
+// predecessors' terms grows quadratically, and 64 patches each under the per-patch budget
+// took minutes (issue 38). Counted while building, as kDerivedNodes.
+constexpr size_t kSceneDerivedNodes = size_t{1} << 20;
 // A derived condition's text (shown in the page, typed by detach) is elided past this.
 constexpr size_t kDerivedTextChars = 2000;
 

@@ -1,5 +1,7 @@
 #include "scene/chain_conditions.hpp"
 
+#include <algorithm>
+
 #include "common/limits.hpp"
 #include "expr/budget.hpp"
 #include "scene/expression_fields.hpp"
@@ -41,9 +43,13 @@ void deriveChainEnd(const Patch& patch, int end, const SolvedLookup& solved, Pde
 
 }  // namespace
 
-std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const SolvedLookup& solved) {
+std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const SolvedLookup& solved, size_t* sceneNodes) {
   auto out = std::make_shared<PdeProblem>(patch.pde);
-  ExprBudget budget(limits::kDerivedNodes, "the conditions derived from solved patches");
+  const size_t used = sceneNodes ? std::min(*sceneNodes, limits::kSceneDerivedNodes) : 0;
+  const bool sceneBound = limits::kSceneDerivedNodes - used < limits::kDerivedNodes;
+  ExprBudget budget(sceneBound ? limits::kSceneDerivedNodes - used : limits::kDerivedNodes,
+                    sceneBound ? "the conditions derived from solved patches, summed over the scene (" + std::to_string(used) + " nodes before this patch's),"
+                               : std::string("the conditions derived from solved patches"));
   for (int end = 0; end < 2; ++end) {
     if (!patch.ends[end].given || patch.ends[end].patch.empty()) continue;
     budget.setPath(patch.ends[end].path);
@@ -53,6 +59,7 @@ std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const Solve
     budget.setPath(patch.fill.path);
     deriveFill(patch, solved, *out);
   }
+  if (sceneNodes) *sceneNodes += budget.used();
   return out;
 }
 

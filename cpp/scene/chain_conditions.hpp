@@ -17,8 +17,10 @@ namespace pdesurf {
 using SolvedLookup = std::function<const SolvedPatch&(const std::string&)>;
 
 // The patch's problem with every chained end and its fill's loop derived; throws
-// Error(InvalidField | NonFinite | TooLarge) naming the reference.
-std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const SolvedLookup& solved);
+// Error(InvalidField | NonFinite | TooLarge) naming the reference. sceneNodes: the nodes the
+// solve's earlier derivations built, grown by this one's (limits::kSceneDerivedNodes bounds the
+// sum: what is left of it bounds this derivation while it builds).
+std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const SolvedLookup& solved, size_t* sceneNodes = nullptr);
 
 // In scene/fill_conditions.cpp: the fill's conditions at u = 0 (the loop) and u = 1 (its centre).
 void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out);

@@ -82,6 +82,12 @@ SeparableSurface primaryToSeparable(const PrimarySurface& p) {
     for (const PrimaryTerm& t : p.terms[c]) s.component[c].push_back({t.v, tFactor(t.t, t.coef)});
   s.pointwise = p.pointwise;
   s.pointwisePartials = p.pointwisePartials;
+  // Its non-separable part's partials built and compiled once, for every tabulation after.
+  for (int c = 0; c < 3; ++c) {
+    if (!s.pointwise[c]) continue;
+    if (s.pointwisePartials[c].size() < 6) s.pointwisePartials[c] = partialDerivatives(s.pointwise[c], true);
+    s.pointwisePrograms[c] = std::make_shared<const ExprProgram>(s.pointwisePartials[c]);
+  }
   return s;
 }
 
@@ -193,12 +199,13 @@ void solveInOrder(const Scene& scene, const std::vector<size_t>& wanted, std::ve
       if (scene.patches[i].name == name && out[i]) return *out[i];
     throw Error(ErrorCode::Internal, "'" + name + "' is not solved yet");
   };
+  size_t derivedNodes = 0;  // summed over the solve (limits::kSceneDerivedNodes)
   for (size_t i : wanted) {
     const Patch& p = scene.patches[i];
     std::shared_ptr<const PdeProblem> problem;
     if (!p.dependsOn.empty()) {
       try {
-        problem = derivedProblem(p, lookup);
+        problem = derivedProblem(p, lookup, &derivedNodes);
       } catch (const Error& e) {
         throw Error(e.code(), "patch '" + p.name + "': " + e.what());
       }

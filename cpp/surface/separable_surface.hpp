@@ -8,6 +8,7 @@
 
 #include "basis/vfunction.hpp"
 #include "expr/expr.hpp"
+#include "expr/program.hpp"
 #include "ode/u_factor.hpp"
 
 namespace pdesurf {
@@ -27,6 +28,10 @@ struct SeparableSurface {
   // When not empty: pointwise[c] and its partial derivatives, X, X_u, X_v, X_uu, X_uv, X_vv,
   // built (and bounded) beforehand, e.g. for a surface trimmed along a curve.
   std::array<std::vector<Expr>, 3> pointwisePartials;
+  // Those six partials compiled into one program per component, when they are built (a
+  // primary's, once per solve): every tabulation of the surface (its mesh, each join's edge,
+  // the crossings) runs it instead of compiling its own.
+  std::array<std::shared_ptr<const ExprProgram>, 3> pointwisePrograms;
 };
 
 // ∂^{du+dv} X_c / ∂u^du ∂v^dv at (u, v) for component c (0, 1, 2).

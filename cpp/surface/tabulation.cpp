@@ -101,7 +101,8 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
     const size_t Q = maxDerivative >= 2 ? 6 : 3;
     const auto& pre = s.pointwisePartials[c];
     t.pointwise[c] = pre.size() >= Q ? std::vector<Expr>(pre.begin(), pre.begin() + Q) : partialDerivatives(e, maxDerivative >= 2);
-    t.pointwiseProgram[c] = std::make_shared<const ExprProgram>(t.pointwise[c]);
+    // The surface's own program (all six partials; the rows read the first Q) when it has one.
+    t.pointwiseProgram[c] = pre.size() >= 6 && s.pointwisePrograms[c] ? s.pointwisePrograms[c] : std::make_shared<const ExprProgram>(t.pointwise[c]);
   }
   return t;
 }

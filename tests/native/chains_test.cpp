@@ -10,6 +10,8 @@
 #include <random>
 
 #include "analysis/join_certificate.hpp"
+#include "common/limits.hpp"
+#include "scene/chain_conditions.hpp"
 #include "scene/scene.hpp"
 #include "test_util.hpp"
 
@@ -156,4 +158,23 @@ TEST_CASE("a cache re-solves only the patches downstream of an edit") {
   // The reused surfaces are the ones solved: the same figures as without the cache.
   const auto fresh = solveScene(s2);
   CHECK((evalPoint(solvedNamed(upstream, "b").surface, 0.4, 1.1) - evalPoint(solvedNamed(fresh, "b").surface, 0.4, 1.1)).norm() == 0);
+}
+
+TEST_CASE("the conditions derived in one solve are bounded summed over its patches, counted while building") {
+  // Issue 38 #1: each chained patch was bounded alone, so a long chain's derivations summed
+  // without limit. The aeroplane, the largest example, derives 5 310 nodes in all.
+  const Scene scene = parseScene(readText(examplePath("bottle-solid.json")));
+  const auto solved = solveScene(scene);
+  const SolvedLookup lookup = [&](const std::string& name) -> const SolvedPatch& { return solvedNamed(solved, name); };
+  const Patch& cap = *scene.find("cap");
+  size_t used = 0;
+  derivedProblem(cap, lookup, &used);
+  CHECK(used > 0);
+  CHECK(used < limits::kDerivedNodes);
+  // The same derivation with the rest of the scene's budget nearly spent: refused at the limit.
+  size_t spent = limits::kSceneDerivedNodes - used / 2;
+  CHECK_THROWS_WITH_AS(derivedProblem(cap, lookup, &spent), doctest::Contains("summed over the scene"), Error);
+  spent = limits::kSceneDerivedNodes - used;
+  CHECK_NOTHROW(derivedProblem(cap, lookup, &spent));
+  CHECK(spent == limits::kSceneDerivedNodes);
 }

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "basis/general_function.hpp"
+#include "methods/measures.hpp"
 #include "test_util.hpp"
 
 using namespace pdesurf;
@@ -53,4 +54,45 @@ TEST_CASE("shared tabulation: kept exponentials and one program for every order 
   CHECK(pieces > 0);
   CHECK(generals > 0);
   CHECK(kept < pieces);  // the sharing is real: terms do share their rates
+}
+
+TEST_CASE("the interior residual tabulated once per grid line is the point-by-point one, on every example's pde patches") {
+  // Issue 38 #2: point by point, a heavy fill's general functions were re-expanded for every
+  // point and order (check took 11 s). The tabulated sums must give the same figure and place.
+  size_t patches = 0;
+  for (const char* id : {"you2004-fig3b", "you2004-fig5", "you2004-fig8d", "bottle-solid", "zhang-c2-ex1", "ref-pipe-tjoint", "you2004-fig8c"}) {
+    INFO(id);
+    const Scene scene = parseScene(readText(examplePath(std::string(id) + ".json")));
+    for (const SolvedPatch& sp : solveScene(scene)) {
+      if (sp.patch->kind != PatchKind::Pde) continue;
+      INFO(sp.patch->name);
+      ++patches;
+      const PdeProblem& p = sp.pde();
+      const int grid = 8;
+      double worst = -1.0, scale = 0.0, wu = 0, wv = 0;
+      for (int i = 1; i < grid; ++i)
+        for (int j = 1; j < grid; ++j) {
+          const double u = double(i) / grid, v = p.v0 + (p.v1 - p.v0) * j / grid;
+          double r = 0.0;
+          for (int c = 0; c < 3; ++c) {
+            const auto& a = p.component[c].alpha;
+            const int n = int(a.size()) - 1;
+            const double f = forceAt(p.component[c].force, u, v);
+            double sum = -f, mag = std::abs(f);
+            for (int k = 0; k <= n; ++k) {
+              const double part = a[k] * evalComponent(sp.surface, c, u, v, 2 * (n - k), 2 * k);
+              sum += part, mag += std::abs(part);
+            }
+            r = std::max(r, std::abs(sum));
+            scale = std::max(scale, mag);
+          }
+          if (r > worst) worst = r, wu = u, wv = v;
+        }
+      const PdeResidual got = interiorResidual(p, sp.surface, grid);
+      CHECK(std::abs(got.absolute - worst) <= 1e-9 * scale);
+      CHECK(std::abs(got.relative - worst / scale) <= 1e-9);
+      if (worst > 1e-6 * scale) CHECK((got.u == wu && got.v == wv));  // the same place, where it is not rounding
+    }
+  }
+  CHECK(patches > 20);
 }
