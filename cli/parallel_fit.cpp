@@ -37,12 +37,16 @@ std::vector<PatchFit> fitSceneOnThreads(const std::string& sceneText, const std:
   // The first patch (in the scene's order) that fails so far: a patch after it is not started,
   // one before it still is, so the error rethrown is the one fitScene meets, whatever the timing.
   std::atomic<size_t> firstFailed{n};
+  // One budget for the scene, whichever thread fits which patch (cad/fit_work.hpp).
+  FitWork budget;
+  FitOptions shared = fit;
+  if (!shared.work) shared.work = &budget;
   auto work = [&](const std::vector<SolvedPatch>& own) {
     for (size_t k; (k = next.fetch_add(1)) < n;) {
       const size_t i = order[k];
       if (i > firstFailed.load()) continue;
       try {
-        out[i] = fitPatch(own[i], fit);
+        out[i] = fitPatch(own[i], shared);
       } catch (...) {
         failed[i] = std::current_exception();
         for (size_t f = firstFailed.load(); i < f && !firstFailed.compare_exchange_weak(f, i);) {

@@ -269,6 +269,10 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
                       " certificate points, " + std::to_string(kFitMaxIterations) + " refinements)");
     }
     const SurfaceOnGrid surface(s, grid.u);
+    // This round's point evaluations (five partials each for the certificate, three more for a
+    // new least-squares fit), charged to the scene's budget before they are made.
+    if (o.work) o.work->charge(double(points) * surface.pointCost() * (spansChanged ? 8 : 5));
+    boundCache.work = o.work;
     if (spansChanged) {
       fit = leastSquares(s, o.degree, U, V, grid, fitData(s, surface, grid), shape);
       boundB = splineFourthBounds(fit.surface);

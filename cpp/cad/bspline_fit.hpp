@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "cad/fit_work.hpp"
 #include "cad/bspline_surface.hpp"
 #include "surface/separable_surface.hpp"
 
@@ -21,6 +22,8 @@ struct FitOptions {
   // Normals of S and B at the grid points of the borders u0 and u1 (where ends join) within
   // this angle too (measured, not bounded between points): what keeps G1 joins G1 once written.
   double normalToleranceDeg = 0.01;
+  // The scene's work budget (cad/fit_work.hpp) this fit charges, if any.
+  FitWork* work = nullptr;
 };
 
 struct FitReport {

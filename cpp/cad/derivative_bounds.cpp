@@ -73,6 +73,7 @@ Bound boundGeneral(const GeneralFunction& g, int k, double a, double b, int dept
       return it->second;
   }
   const Interval vars[2] = {{a, b}, {0.0, 0.0}};
+  if (cache && cache->work) cache->work->charge(kIntervalStepCost * double(c.enclose->steps()) + 3.0 * double(c.sample->instructions()));
   const double enclosed = c.enclose->run(vars).magnitude();
   Bound r{enclosed, 0, true};
   if (depth > 0) {
@@ -172,10 +173,13 @@ std::array<Eigen::MatrixXd, 3> boundPartials(const SeparableSurface& s, int du, 
         for (int r = 0; r < du; ++r) d = derivative(d, ExprVar::U);
         for (int r = 0; r < dv; ++r) d = derivative(d, ExprVar::V);
       }
+      // Compiled once for every cell (each enclose() compiled its own), charged per cell.
+      const IntervalProgram program(d);
+      if (cache && cache->work) cache->work->charge(kIntervalStepCost * double(program.steps()) * nu * nv);
       for (int i = 0; i < nu; ++i)
         for (int j = 0; j < nv; ++j) {
           const Interval vars[2] = {{vBreaks[size_t(j)], vBreaks[size_t(j) + 1]}, {uBreaks[size_t(i)], uBreaks[size_t(i) + 1]}};
-          out[size_t(c)](i, j) += enclose(d, vars).magnitude();
+          out[size_t(c)](i, j) += program.run(vars).magnitude();
         }
     }
   }

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "cad/fit_work.hpp"
 #include "expr/interval.hpp"
 #include "expr/program.hpp"
 #include "surface/separable_surface.hpp"
@@ -25,6 +26,7 @@ double boundVFunction(const VFunction& g, int k, double a, double b);
 // Bounds of general functions already found during one fit, by (function, order, interval):
 // refinement keeps most spans from one round to the next.
 struct GeneralBoundCache {
+  FitWork* work = nullptr;  // the scene's budget each enclosure is charged to (cad/fit_work.hpp)
   // A bound, the halvings found below its interval, and whether one of them stopped at the
   // halving limit (then it holds for that limit only).
   struct Bound {

@@ -38,6 +38,8 @@ PatchFit fitPatch(const SolvedPatch& sp, const FitOptions& fit) {
     } else {
       f.surface = fitSurface(sp.surface, fit, &f.report);
     }
+  } catch (const SceneWorkExceeded&) {
+    throw;  // the scene's, not this patch's
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
   }
@@ -46,8 +48,10 @@ PatchFit fitPatch(const SolvedPatch& sp, const FitOptions& fit) {
 }
 
 std::vector<PatchFit> fitScene(const std::vector<SolvedPatch>& solved, const SceneFitOptions& o, double* tolerance) {
-  const FitOptions fit = resolveFitOptions(solved, o);
+  FitOptions fit = resolveFitOptions(solved, o);
   if (tolerance) *tolerance = fit.tolerance;
+  FitWork work;  // the scene's budget, summed over its patches
+  if (!fit.work) fit.work = &work;
   std::vector<PatchFit> out;
   for (const SolvedPatch& sp : solved) {
     out.push_back(fitPatch(sp, fit));

@@ -24,6 +24,7 @@ class IntervalProgram {
   explicit IntervalProgram(const Expr& e);
   // vars[0] = v's interval, vars[1] = u's.
   Interval run(const Interval* vars) const;
+  size_t steps() const { return steps_.size(); }
 
  private:
   struct Step {

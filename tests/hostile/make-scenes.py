@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes tests/hostile/scenes/*.json and scenes.json: hostile scenes, each with the named
 error both the CLI and the wasm module must give (tests/js/hostile.test.mjs): `export` to OBJ
-and a solve, or (command "check") `pdesurf check` and a solve with the join report. Deterministic:
+and a solve, or (command "check") `pdesurf check` and a solve with the join report, or (command
+"cad") `export -o x.step` and the module's exportCad. Deterministic:
 run again after adding a case.   python3 tests/hostile/make-scenes.py"""
 import copy, json, os
 
@@ -74,6 +75,22 @@ def chain_v_range_one_ulp(d):
     d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, 6.283185307179587],  # 2*pi is ...586
                          'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'surface': 'neck', 'at': 't1'}}})
 
+def heavy_tube_fill(parts):
+    # A tube whose x and y are ~900-character products (37 wavy factors), a fill of `parts`
+    # ranges of its bottom ring.
+    import math
+    def product(base):
+        return base + '*' + '*'.join(f'(1+0.001*sin({k}*v+{k}*t))' for k in range(1, 38))
+    tube = {'name': 'tube', 'kind': 'surface', 't_range': [0, 1], 'v_range': [0, '2*pi'], 'x': product('cos(v)'), 'y': product('sin(v)'), 'z': 't'}
+    borders = [{'patch': 'tube', 'at': 't0', 'range': [2 * math.pi * k / parts, 2 * math.pi * (k + 1) / parts]} for k in range(parts)]
+    return {'format': 'pdesurf-scene', 'version': 4, 'patches': [tube, {'name': 'cap', 'kind': 'fill', 'borders': borders}]}
+
+# Cases measured by the CAD export: `export -o x.step` in the CLI, exportCad in the module.
+cad = [
+    ('cad-heavy-fill', heavy_tube_fill(3), 16, 'TooLarge', 'the CAD fit of the scene would need more than 1e+10 units of work',
+     'issue 38 #3: a fill of a heavy tube took 398 s natively to export as STEP (its derivative bounds halving their intervals); no scene budget'),
+]
+
 # Cases measured by the join certificate: `check` in the CLI, a solve with joins in the module.
 checked = [
     ('gap-hidden-by-far-patch', with_(fig4a, gap_hidden_by_far_patch), 16, 'InvalidField', "is not the border u1 of 'blend': they are 0.5 apart",
@@ -135,7 +152,7 @@ cases = [
 
 os.makedirs(os.path.join(HERE, 'scenes'), exist_ok=True)
 manifest = {'format': 'pdesurf-hostile-scenes', 'version': 1, 'scenes': []}
-for command, group in (('export', cases), ('check', checked)):
+for command, group in (('export', cases), ('check', checked), ('cad', cad)):
     for name, scene, grid, code, message, why in group:
         text = scene if isinstance(scene, str) else json.dumps(scene, indent=1)
         with open(os.path.join(HERE, 'scenes', name + '.json'), 'w') as f:
@@ -144,4 +161,4 @@ for command, group in (('export', cases), ('check', checked)):
                                    'message': message, 'why': why})
 with open(os.path.join(HERE, 'scenes.json'), 'w') as f:
     f.write(json.dumps(manifest, indent=2, ensure_ascii=False) + '\n')
-print(len(cases) + len(checked), 'scenes written')
+print(len(cases) + len(checked) + len(cad), 'scenes written')

@@ -72,15 +72,17 @@ describe('hostile corpus', () => {
       const file = path.join(HOSTILE, s.file);
       const out = path.join(os.tmpdir(), `pdesurf-hostile-${process.pid}.obj`);
       const checked = s.command === 'check';  // measured by the join certificate
+      const cad = s.command === 'cad';  // measured by the CAD export
       const grid = `${s.grid}x${s.grid}`;
-      const r = cli(checked ? ['check', file, '--grid', grid] : ['export', file, '-o', out, '--grid', grid]);
+      const args = checked ? ['check', file, '--grid', grid] : cad ? ['export', file, '-o', out.replace(/\.obj$/, '.step')] : ['export', file, '-o', out, '--grid', grid];
+      const r = cli(args);
       assert.equal(r.status, 1, `exit ${r.status}: ${r.stderr}`);
       assert.match(r.stderr, new RegExp(`: ${s.code}: `), r.stderr);
       assert.ok(r.stderr.includes(s.message), r.stderr);
       // Every error message is at most 600 characters (docs/limits.md), user text clipped.
       const line = r.stderr.trim().split(`: ${s.code}: `).slice(1).join(`: ${s.code}: `);
       assert.ok(Buffer.byteLength(line) <= 600, `${Buffer.byteLength(line)} bytes`);
-      if (!checked) {
+      if (!checked && !cad) {
         // One verdict everywhere: check says what export says (issue 38 #12).
         const c = cli(['check', file, '--grid', grid]);
         assert.equal(c.status, 1, `check: exit ${c.status}: ${c.stdout.slice(0, 300)}`);
@@ -88,7 +90,9 @@ describe('hostile corpus', () => {
       }
       const text = fs.readFileSync(file, 'utf8');
       const named = (err) => err.code === s.code && err.message.includes(s.message) && err.message.length <= 600;
-      if (checked) {
+      if (cad) {
+        assert.throws(() => solver.exportCad(text, { format: 'step' }), (err) => err instanceof PdesurfError && named(err));
+      } else if (checked) {
         // The page keeps the surface and says what is wrong in the report.
         const error = solver.solve(text, { nu: s.grid, nv: s.grid, joins: true }).report.error;
         assert.ok(error && named(error), JSON.stringify(error));
