@@ -45,7 +45,10 @@ int runCompare(const Options& o, std::ostream& out) {
     throw std::runtime_error(o.patch.empty() ? "the scene has no PDE patch" : "no PDE patch named '" + o.patch + "'");
   const int Iu = o.gridGiven ? o.nu : 100, Jv = o.gridGiven ? o.nv : 100;
   if (Iu < 2 || Jv < 2 || Iu > 2048 || Jv > 2048) throw std::runtime_error("--grid must be 2x2 .. 2048x2048 for compare");
-  const PdeProblem& problem = patch->pde;
+  // The problem the scene solves: a chained end's or a fill's conditions derived from the
+  // patches it depends on (issue 38 #10: the typed problem alone, a fill's empty, gave E = nan).
+  const SolvedPatch solved = solvePatchIn(scene, *patch);
+  const PdeProblem& problem = solved.pde();
   PdeProblem restored;
   const bool closed = restoreFamilies(problem, &restored);
   const MethodSolution ref = closed ? solveWithMethod(problem, parseMethod("closed")) : solveReference(problem);

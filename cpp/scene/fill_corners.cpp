@@ -9,6 +9,12 @@
 
 namespace pdesurf {
 
+namespace {
+// How far apart (of 4 × the longer cross derivative) the two sides' lines may pass and still
+// be taken as crossing (the planes some 15° apart); past it, the fallback below.
+constexpr double kNearLines = 0.25;
+}  // namespace
+
 std::vector<SideMix> cornerDirections(const std::vector<FillSide>& sides, const std::vector<double>& scale) {
   const size_t n = sides.size();
   std::vector<SideMix> mix(n, {1.0, 0.0, 1.0, 0.0});  // γ, α at v0; γ, α at v1
@@ -38,12 +44,16 @@ std::vector<SideMix> cornerDirections(const std::vector<FillSide>& sides, const 
     // by 1e-10 (a G2 cap's seam parted by 5e-12 of the scene).
     if ((Ds - De).norm() <= 1e-6 * longest && Te.cross(Ts).norm() <= 1e-6 * Te.norm() * Ts.norm() && Te.dot(Ts) > 0) continue;
     // First choice: W where the two sides' lines De + αTe and Ds + βTs cross, so each side keeps
-    // its own cross derivative (γ = 1): a corner of any angle short of straight.
+    // its own cross derivative (γ = 1): a corner of any angle short of straight. Where the
+    // sides' tangent planes differ a little the lines pass near each other instead: each side
+    // leaves along its own nearest point (in its own plane: G1 untouched), the two directions
+    // apart by the planes' difference. Continuous in it: a 1e-5 difference once fell through
+    // to the fallback below and folded a flat hexagon's fill at its corners (issue 38 #14).
     Eigen::Matrix<double, 3, 2> A;
     A << Te, -Ts;
     const Eigen::Vector2d ab = A.colPivHouseholderQr().solve(Ds - De);
     const Eigen::Vector3d W = De + ab(0) * Te;
-    if (ab.allFinite() && (A * ab - (Ds - De)).norm() <= 1e-6 * longest && W.norm() <= longest) {
+    if (ab.allFinite() && (A * ab - (Ds - De)).norm() <= kNearLines * longest && W.norm() <= longest) {
       mix[k][3] = ab(0), mix[(k + 1) % n][1] = ab(1);
       continue;
     }

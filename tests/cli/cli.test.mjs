@@ -115,6 +115,24 @@ test('sample --method picks the solver; compare --json reports every applicable 
   assert.match(table.stdout, /E over 100x100 points against the closed solution/);
 });
 
+// Issue 38 #10: on a fill every method's E was nan (the typed problem of a fill is empty), and
+// on a chained patch compare solved the typed problem without the conditions it derives.
+test('compare measures the problem the scene solves: a fill\'s loop, a chained end\'s derived conditions', () => {
+  for (const [file, patch] of [[example('bottle-solid'), 'cap'], [example('you2004-fig8d'), 'front2']]) {
+    const r = run('compare', file, '--patch', patch, '--grid', '12x12', '--json');
+    assert.equal(r.status, 0, r.stderr);
+    const rows = JSON.parse(r.stdout).filter((row) => !row.error);
+    assert.ok(rows.length >= 3, `${patch}: ${r.stdout.slice(0, 300)}`);
+    for (const row of rows)
+      for (const key of ['E', 'bc_error', 'residual']) assert.ok(Number.isFinite(row[key]), `${patch} ${row.method}.${key} = ${row[key]}`);
+    // The methods that meet boundary data exactly meet the derived data: had compare dropped
+    // them (a fill's are all there is), they would meet something else, or nothing.
+    const exact = rows.filter((row) => /^(closed|pseudo-navier|modal:64)$/.test(row.method));
+    assert.ok(exact.length >= 1, `${patch}: ${rows.map((row) => row.method)}`);
+    for (const row of exact) assert.ok(row.bc_error < 1e-9 && row.E < 1e-6, `${patch} ${row.method}: bc ${row.bc_error}, E ${row.E}`);
+  }
+});
+
 test('encode-link then decode-link gives bit-identical samples for every example', () => {
   const index = JSON.parse(readFileSync(join(root, 'examples/index.json'), 'utf8'));
   const dir = mkdtempSync(join(tmpdir(), 'pdesurf-link-'));

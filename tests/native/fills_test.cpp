@@ -126,6 +126,22 @@ TEST_CASE("a fill's normal is a direction at any scale: [1e200, 0, 1e200] tilts 
   CHECK_THROWS_WITH_AS(centreWith({0, 0, 0}), doctest::Contains("the zero vector has no direction"), Error);
 }
 
+TEST_CASE("a hexagonal hole whose strips tilt alternately by a little or by a lot: a fill G1 to each, no fold at the corners") {
+  // Issue 38 #14: tangent planes 1e-5 apart at the corners sent the corner's directions to a
+  // fallback that folded the fill ("the fill folds"); the exactly flat hole passed.
+  for (double slope : {1e-7, 1e-5, 1e-3, 0.03, 0.1}) {
+    CAPTURE(slope);
+    json j = polygonScene(6, 0, 0, 0, 0.3);
+    for (int k = 0; k < 6; ++k) j["patches"][k]["z"] = num(k % 2 ? -slope : slope) + "*t";
+    const Scene scene = parseScene(j.dump());
+    const auto solved = solveScene(scene);  // throws where the fill folds
+    const SceneReport r = checkScene(scene, solved, 32);
+    CHECK(r.ok);
+    CHECK(r.joins.size() == 6);
+    for (const JoinResult& jr : r.joins) CHECK(jr.g1Deg < 1e-9);
+  }
+}
+
 TEST_CASE("bad loops are named errors and nothing is drawn") {
   auto solveError = [](const json& scene) -> std::string {
     try {
