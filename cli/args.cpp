@@ -1,3 +1,4 @@
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -69,10 +70,13 @@ Options parseArgs(const std::vector<std::string>& args) {
       if (o.format != "step" && o.format != "stp" && o.format != "iges" && o.format != "igs") parseMeshFormat(o.format);  // refused here, before any work
     } else if (a == "--tol") {
       const std::string& t = value();
+      // Decimal only, as numbers in scenes (docs/limits.md): strtod alone also reads "0x1p-10",
+      // " 1e-3", "inf" and "nan".
+      const bool decimal = !t.empty() && t.find_first_not_of("0123456789.eE+-") == std::string::npos && std::isdigit(static_cast<unsigned char>(t[0]));
       char* end = nullptr;
-      o.tolerance = std::strtod(t.c_str(), &end);
-      if (t.empty() || *end != '\0' || !(o.tolerance > 0) || !std::isfinite(o.tolerance))
-        throw std::runtime_error("--tol expects a positive finite number, got '" + t.substr(0, 40) + "'");
+      o.tolerance = decimal ? std::strtod(t.c_str(), &end) : 0.0;
+      if (!decimal || *end != '\0' || !(o.tolerance > 0) || !std::isfinite(o.tolerance))
+        throw std::runtime_error("--tol expects a positive finite decimal number, got '" + t.substr(0, 40) + "'");
     } else if (a == "--degree") {
       const std::string& d = value();
       if (d != "3" && d != "5") throw std::runtime_error("--degree expects 3 or 5, got '" + d.substr(0, 40) + "'");

@@ -20,6 +20,9 @@ double sceneDiagonal(const std::vector<SolvedPatch>& solved) {
 }
 
 FitOptions resolveFitOptions(const std::vector<SolvedPatch>& solved, const SceneFitOptions& o) {
+  // Before the tolerance: an empty scene's default tolerance would be 0 of nothing, and the
+  // error blamed a tolerance nobody gave.
+  if (solved.empty()) throw Error(ErrorCode::InvalidField, "patches: the scene has no patch to write as a CAD face");
   FitOptions fit;
   fit.degree = o.degree;
   fit.tolerance = o.tolerance;

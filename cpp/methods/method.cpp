@@ -14,11 +14,14 @@ namespace {
 // remainder is then carried within ~1/130 of the edge that has it).
 constexpr int kSeamCornerModes = 64;
 
-int parseCount(const std::string& text, const std::string& whole) {
+// A count from 1 to `most` (Fourier and pseudo-spectral expansions: 1000, their solvers' own
+// bound, refused here rather than after the scene is read and solved).
+int parseCount(const std::string& text, const std::string& whole, long most = 4096) {
   char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < 1 || v > 4096)
-    throw Error(ErrorCode::InvalidField, "method '" + whole + "': expected a whole number of terms, got '" + text + "'");
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const long v = digits && text.size() <= 9 ? std::strtol(text.c_str(), &end, 10) : 0;
+  if (!digits || v < 1 || v > most)
+    throw Error(ErrorCode::InvalidField, "method '" + whole + "': expected a whole number of terms from 1 to " + std::to_string(most) + ", got '" + text + "'");
   return static_cast<int>(v);
 }
 
@@ -37,8 +40,8 @@ Method parseMethod(const std::string& text) {
   else if (name == "closed") needs(false), m.kind = MethodKind::Closed;
   else if (name == "reference") needs(false), m.kind = MethodKind::Reference;
   else if (name == "modal") needs(true), m.kind = MethodKind::Modal, m.terms = parseCount(arg, text);
-  else if (name == "fourier") needs(true), m.kind = MethodKind::Fourier, m.terms = parseCount(arg, text);
-  else if (name == "pseudo-spectral") needs(true), m.kind = MethodKind::PseudoSpectral, m.terms = parseCount(arg, text);
+  else if (name == "fourier") needs(true), m.kind = MethodKind::Fourier, m.terms = parseCount(arg, text, 1000);
+  else if (name == "pseudo-spectral") needs(true), m.kind = MethodKind::PseudoSpectral, m.terms = parseCount(arg, text, 1000);
   else if (name == "pseudo-navier") {
     m.kind = MethodKind::PseudoNavier;
     if (colon != std::string::npos) {  // M,N,L

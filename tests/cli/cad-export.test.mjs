@@ -245,14 +245,24 @@ test('an unreachable tolerance names the patch and the deviation reached, and wr
 });
 
 test('a tolerance that is not a positive finite number, or a degree other than 3 or 5, is refused before any work', () => {
-  for (const bad of ['0', '-1', 'nan', 'inf', '1e-3x', '']) {
+  // Decimal only, as numbers in scenes (issue 38: 0x1p-10 and ' 1e-3' were read by strtod).
+  for (const bad of ['0', '-1', 'nan', 'inf', '1e-3x', '', '0x1p-10', ' 1e-3', '+1e-3', 'infinity', '.5e-3']) {
     const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'bad.step'), '--tol', bad], { encoding: 'utf8' });
     assert.equal(r.status, 1, bad);
-    assert.match(r.stderr, /--tol expects a positive finite number/);
+    assert.match(r.stderr, /--tol expects a positive finite decimal number/);
   }
+  const good = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'good.step'), '--tol', '1e-3'], { encoding: 'utf8' });
+  assert.equal(good.status, 0, good.stderr);
   const r = spawnSync(cli, ['export', example('you2004-fig4a'), '-o', join(dir, 'bad.step'), '--degree', '4'], { encoding: 'utf8' });
   assert.match(r.stderr, /--degree expects 3 or 5/);
   assert.equal(existsSync(join(dir, 'bad.step')), false);
+  // An empty scene: nothing to write, said so (it blamed a tolerance nobody gave).
+  const empty = join(dir, 'empty.json');
+  writeFileSync(empty, JSON.stringify({ format: 'pdesurf-scene', version: 4, patches: [] }));
+  const e = spawnSync(cli, ['export', empty, '-o', join(dir, 'empty.step')], { encoding: 'utf8' });
+  assert.equal(e.status, 1);
+  assert.match(e.stderr, /InvalidField: patches: the scene has no patch to write as a CAD face/);
+  assert.equal(existsSync(join(dir, 'empty.step')), false);
 });
 
 test('--jobs: the patches fitted on 1, 2 or 3 threads give the same file, the same error, and bad counts are refused', () => {

@@ -99,6 +99,12 @@ test('sample --method picks the solver; compare --json reports every applicable 
   const bad = run('sample', fig1, '--method', 'modal');
   assert.equal(bad.status, 1);
   assert.match(bad.stderr, /method 'modal' needs a number of terms/);
+  // Refused by the method's parser, before the scene is solved (issue 38: fourier:4096 passed it).
+  for (const [method, most] of [['fourier:4096', 1000], ['pseudo-spectral:1001', 1000], ['modal:4097', 4096], ['modal:+5', 4096], ['modal: 5', 4096]]) {
+    const r = run('sample', fig1, '--method', method);
+    assert.equal(r.status, 1, method);
+    assert.match(r.stderr, new RegExp(`expected a whole number of terms from 1 to ${most}`), method);
+  }
 
   const r = run('compare', fig1, '--json');
   assert.equal(r.status, 0, r.stderr);
