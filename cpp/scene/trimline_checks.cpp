@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "expr/interval.hpp"
 
 namespace pdesurf {
 
@@ -18,6 +19,7 @@ constexpr int kTauBudget = 20000;      // evaluations of tau while bracketing po
 constexpr int kRefineDepth = 48;       // bisections of one sample interval at most
 constexpr int kGoldenSteps = 56;       // golden-section steps from one sampled minimum (0.618^56 ~ 2e-12)
 constexpr size_t kMinima = 24;         // sampled minima refined at most, the smallest first
+constexpr int kEncloseDepth = 56;      // halvings of a sample interval whose enclosure leaves the range
 
 using Vec3Expr = std::array<Expr, 3>;
 
@@ -52,6 +54,12 @@ class TauCheck {
       d[k] = eval1(dtau_, vs[k]);
     }
     for (int k = 0; k + 1 < kSamples; ++k) refine(vs[k], vs[k + 1], t[k], t[k + 1], d[k], d[k + 1], 0);
+    // A pole too narrow for the samples and the Hermite test (0.5 + 1e-9/(v - 2π/3) moved tau
+    // by 1e-7 at the nearest midpoint: accepted on one grid, NonFinite on another, issue 38
+    // #15): each sample interval's enclosure must lie in the range, else it is halved down to
+    // the points, where at() names what is wrong.
+    const IntervalProgram enclosure(tau_);
+    for (int k = 0; k + 1 < kSamples; ++k) enclose(enclosure, vs[k], vs[k + 1], 0);
   }
 
  private:
@@ -67,6 +75,23 @@ class TauCheck {
   }
 
   bool insideBlend(double v) const { return v >= bv0_ && v <= bv1_; }
+
+  void enclose(const IntervalProgram& program, double a, double b, int depth) {
+    if (enclosures_ >= kTauBudget) return;
+    ++enclosures_;
+    const Interval vars[2] = {{a, b}, {0.0, 0.0}};
+    const Interval r = program.run(vars);
+    if (r.bounded() && r.lo >= lo_ - ttol_ && r.hi <= hi_ + ttol_) return;  // proved inside
+    const double m = 0.5 * (a + b);
+    if (depth >= kEncloseDepth || !(m > a && m < b)) {
+      // As narrow as it gets: a pole shows here as a value out of the range (or not finite),
+      // an enclosure merely loose (a square root's edge, rounding at the range's end) does not.
+      at(a), at(m), at(b);
+      return;
+    }
+    enclose(program, a, m, depth + 1);
+    enclose(program, m, b, depth + 1);
+  }
 
   void refine(double a, double b, double ta, double tb, double da, double db, int depth) {
     if (depth >= kRefineDepth || evaluations_ >= kTauBudget) return;
@@ -84,7 +109,7 @@ class TauCheck {
   Expr tau_, dtau_;
   double bv0_, bv1_;
   double lo_ = 0, hi_ = 0, ttol_ = 0, hermiteTol_ = 0;
-  int evaluations_ = 0;
+  int evaluations_ = 0, enclosures_ = 0;
 };
 
 // The smallest f over [a, b] by golden-section search (f unimodal there); returns its v.

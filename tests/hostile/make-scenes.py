@@ -144,6 +144,8 @@ cases = [
      "patches[4].centre: is 2.63e+300 loop radii", 'issue 38 messages: a centre of 1e300 was reported as "the fill folds"'),
     ('fill-power-1e300', with_(bottle, lambda d: d['patches'][4]['borders'][0].__setitem__('power', 1e300)), 16, 'InvalidField',
      'patches[4].borders[0].power: at most 100', 'issue 38 messages: a border power of 1e300 was reported as "does not turn around"'),
+    ('trimline-narrow-pole', with_(fillet, lambda d: d['patches'][0]['ends']['u0'].__setitem__('at', {'t': '0.5 + 1e-9/(v - 2*pi/3)'})), 6,
+     'InvalidField', "patches[0].ends.u0.at: the trimline t = ", 'issue 38 #15: a pole of tau too narrow for the samples was accepted on an 8x8 grid and NonFinite, naming no end, on 4x6'),
     ('chain-both-ends-one-edge', with_(bottle, chain_both_ends_one_edge), 16, 'InvalidField', 'would start and end on the same edge',
      'issue 38 #11: both ends of one patch continuing u1 of the shoulder (three sheets on one edge) were accepted'),
     ('chain-v-range-one-ulp', with_(bottle, chain_v_range_one_ulp), 16, 'InvalidField', '6.2831853071795871] differs from',
