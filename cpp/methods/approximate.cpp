@@ -5,6 +5,7 @@
 #include <complex>
 #include <unsupported/Eigen/FFT>
 
+#include "common/text.hpp"
 #include "basis/general_function.hpp"
 #include "common/errors.hpp"
 
@@ -24,7 +25,7 @@ void requireFinite(const VExpansion& f, double v) {
     const double x = t.g.eval(v);
     if (std::isfinite(x)) continue;
     const std::string name = t.g.isGeneral() ? t.g.general->text() : std::string(familyName(t.g.family));
-    throw Error(ErrorCode::NonFinite, "'" + name + "' is not finite at v = " + std::to_string(v));
+    throw Error(ErrorCode::NonFinite, "'" + name + "' is not finite at v = " + numberText(v));
   }
 }
 

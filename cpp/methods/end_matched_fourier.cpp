@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "methods/approximate.hpp"
 
 namespace pdesurf {
@@ -28,7 +29,7 @@ VExpansion endMatchedFourier(const VExpansion& f, double v0, double v1, int N, i
       if (!std::isfinite(d)) {
         if (k == 0)
           throw Error(ErrorCode::NonFinite, "'" + (f.empty() ? std::string("?") : describeFunction(f.front().g)) +
-                                                "' is not finite at v = " + std::to_string(end ? v1 : v0));
+                                                "' is not finite at v = " + numberText(end ? v1 : v0));
         m = k - 1;
         break;
       }

@@ -12,6 +12,7 @@
 
 #include "common/errors.hpp"
 #include "methods/approximate.hpp"
+#include "common/text.hpp"
 #include "methods/boundary_lift.hpp"
 #include "methods/method.hpp"
 #include "pde/closed_form.hpp"
@@ -91,7 +92,7 @@ SeparableSurface solvePseudoNavier(const PdeProblem& p, int M, int N, int points
         if (!std::isfinite(known) || !std::isfinite(force))
           throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] +
                                                 ": a general boundary function or force is not finite at (u, v) = (" +
-                                                std::to_string(u) + ", " + std::to_string(v) + ")");
+                                                numberText(u) + ", " + numberText(v) + ")");
         rhs(row) = force - known;  // minimise |L X - f| at the point
         for (int m = 1; m <= M; ++m)
           for (int k2 = 1; k2 <= N; ++k2) {

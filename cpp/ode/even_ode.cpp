@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "common/text.hpp"
 #include "common/errors.hpp"
 
 namespace pdesurf {
@@ -173,7 +174,7 @@ EvenOdeBasis::EvenOdeBasis(const std::vector<double>& alpha, double sigma, int f
   const double rcond = lu_.rcond();
   if (!(rcond > 1e-13))
     throw Error(ErrorCode::Singular, "the boundary-value problem has no unique solution: the parameters are resonant (rcond " +
-                                         std::to_string(rcond) + ")");
+                                         numberText(rcond) + ")");
 }
 
 UFactor EvenOdeBasis::solve(const double* left, const double* right, const std::vector<double>& force) const {

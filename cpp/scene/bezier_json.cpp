@@ -3,6 +3,7 @@
 // normals, given as vectors or as expressions in u and v, with optional per-sample weights).
 #include "bezier/bezier_assembly.hpp"
 #include "expr/parse.hpp"
+#include "common/text.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/scene.hpp"
@@ -49,7 +50,7 @@ std::vector<double> sampled(const json& j, const std::string& path, const Resolv
     for (int k = 0; k <= mp; ++k) {
       const double vars[2] = {static_cast<double>(k) / mp, static_cast<double>(i) / np};  // v, u
       const double x = evaluate(*e, vars);
-      if (!std::isfinite(x)) fail(ErrorCode::NonFinite, path, "'" + text + "' is not finite at (u, v) = (" + std::to_string(vars[1]) + ", " + std::to_string(vars[0]) + ")");
+      if (!std::isfinite(x)) fail(ErrorCode::NonFinite, path, "'" + text + "' is not finite at (u, v) = (" + numberText(vars[1]) + ", " + numberText(vars[0]) + ")");
       out.push_back(x);
     }
   return out;

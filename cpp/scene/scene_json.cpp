@@ -7,6 +7,7 @@
 
 #include "bezier/bezier_solver.hpp"
 #include "expr/budget.hpp"
+#include "common/text.hpp"
 #include "scene/bezier_borders.hpp"
 #include "scene/derived_ends.hpp"
 #include "scene/expression_fields.hpp"
@@ -58,7 +59,7 @@ void parseParameters(const json& j, Scene& scene, Resolver& r, int version) {
     p.max = num("max");
     if (!(p.min < p.max)) fail(ErrorCode::InvalidField, path, "min must be less than max");
     if (p.value < p.min || p.value > p.max)
-      fail(ErrorCode::InvalidField, path + ".value", "outside [min, max] = [" + std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
+      fail(ErrorCode::InvalidField, path + ".value", "outside [min, max] = [" + numberText(p.min) + ", " + numberText(p.max) + "]");
     if (it.value().contains("label")) p.label = stringField(it.value()["label"], path + ".label");
     if (it.value().contains("step")) {
       p.step = num("step");

@@ -3,6 +3,7 @@
 
 #include "common/errors.hpp"
 #include "bezier/bezier_solver.hpp"
+#include "common/text.hpp"
 #include "methods/measures.hpp"
 #include "methods/method.hpp"
 #include "analysis/fill_centre.hpp"
@@ -150,7 +151,7 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
     if (forced && m.kind != MethodKind::Fourier && m.kind != MethodKind::PseudoSpectral) {
       const double missed = boundaryConditionError(pde, solution.surface, 32);
       if (std::isfinite(missed) && missed > kBoundaryMiss)
-        throw Error(ErrorCode::Singular, methodName(solution.used) + " missed the boundary conditions by " + std::to_string(missed) +
+        throw Error(ErrorCode::Singular, methodName(solution.used) + " missed the boundary conditions by " + numberText(missed) +
                                              " (relative): the data or the force are beyond what it can expand; try another method");
     }
     if (patch.fill.given) checkFillRegular(patch, solution.surface);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 #include "surface/tabulation.hpp"
 
 namespace pdesurf {
@@ -82,7 +83,7 @@ void combineRowPieces(const Tabulation& t, size_t piece, Emit&& emit) {
             x += part[q][i];
             if (!std::isfinite(x))
               throw Error(ErrorCode::NonFinite, std::string("component ") + "xyz"[c] + ": the surface is not finite at (t, v) = (" +
-                                                    std::to_string(t.u[i0 + i]) + ", " + std::to_string(t.v[j]) + ")");
+                                                    numberText(t.u[i0 + i]) + ", " + numberText(t.v[j]) + ")");
           }
       }
       emit(j, i0, static_cast<const GridRow&>(row));

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "common/text.hpp"
 #include "basis/general_function.hpp"
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
@@ -92,7 +93,7 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
       }
       if (!finite)
         throw Error(ErrorCode::NonFinite, std::string("component ") + axis[c] + ": term " + describeFunction(terms[k].g) +
-                                              " is not finite on the grid (v from " + std::to_string(s.v0) + " to " + std::to_string(s.v1) + ")");
+                                              " is not finite on the grid (v from " + numberText(s.v0) + " to " + numberText(s.v1) + ")");
     }
   }
   for (int c = 0; c < 3; ++c) {

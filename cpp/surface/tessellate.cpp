@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/text.hpp"
 #include "common/errors.hpp"
 #include "surface/combine_rows.hpp"
 #include "surface/row_frame.hpp"
@@ -26,7 +27,7 @@ GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
       const size_t idx = j * m + i;
       for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(row.d[0][c][i]) || !std::isfinite(row.d[1][c][i]) || !std::isfinite(row.d[2][c][i]))
-          throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) +
+          throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + numberText(t.u[i]) + ", " + numberText(t.v[j]) +
                                                 ") or its derivatives are not finite");
         g.X[3 * idx + c] = row.d[0][c][i];
         g.Xu[3 * idx + c] = row.d[1][c][i];
@@ -40,7 +41,7 @@ GridSamples sampleGrid(const SeparableSurface& s, int nu, int nv) {
 namespace {
 
 [[noreturn]] void outOfRange(const Tabulation& t, size_t i, int j) {
-  throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + std::to_string(t.u[i]) + ", " + std::to_string(t.v[j]) +
+  throw Error(ErrorCode::NonFinite, "the surface at (t, v) = (" + numberText(t.u[i]) + ", " + numberText(t.v[j]) +
                                         ") is beyond what a float holds (|x| > 3.4e38) or not finite");
 }
 
