@@ -33,7 +33,7 @@ namespace pdesurf {
 
 namespace {
 
-constexpr double kCloseTolerance = 1e-8;  // of the loop's size: a gap beyond this is refused
+constexpr double kCloseTolerance = 1e-10;  // of the loop's size: a gap beyond this is refused
 
 [[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 

@@ -142,6 +142,23 @@ TEST_CASE("a hexagonal hole whose strips tilt alternately by a little or by a lo
   }
 }
 
+TEST_CASE("a loop that closes to within 1e-10 of its size is filled and certified; a wider gap is refused at once") {
+  // Issue 38: a gap of 2e-8 of the loop's size was accepted (the limit was 1e-8), the sides
+  // moved to meet, and the certificate (G0 to 1e-9) or the crossing test then blamed the fill.
+  for (double gap : {0.0, 1e-12, 2e-11, 5e-9, 2e-8}) {
+    CAPTURE(gap);
+    json j = polygonScene(5, 0.1, 0.2, 0, 0.3);
+    j["patches"][0]["x"] = j["patches"][0]["x"].get<std::string>() + " + " + num(gap * 2.0);  // the loop is about 2 across
+    const Scene scene = parseScene(j.dump());
+    if (gap > 1e-10 * 2.5) {
+      CHECK_THROWS_WITH_AS(solveScene(scene), doctest::Contains("the loop does not close"), Error);
+      continue;
+    }
+    const SceneReport r = checkScene(scene, solveScene(scene), 32);
+    CHECK(r.ok);
+  }
+}
+
 TEST_CASE("bad loops are named errors and nothing is drawn") {
   auto solveError = [](const json& scene) -> std::string {
     try {
