@@ -39,9 +39,9 @@ double boundaryConditionError(const PdeProblem& p, const SeparableSurface& s, in
 
 namespace {
 
-// L X - f of component c at (u, v); *size gets Σ_k |α_k ∂ X| + |f|.
-double residualAt(const ComponentProblem& cp, const SeparableSurface& s, int c, double u, double v, double* size) {
-  const int n = static_cast<int>(cp.alpha.size()) - 1;
+// The force f of component c at (u, v): products of a u-polynomial and a v-function, and
+// expressions in u and v.
+double forceAt(const ComponentProblem& cp, double u, double v) {
   double f = 0.0;
   for (const ForceTerm& t : cp.force) {
     double q = 0.0;
@@ -50,6 +50,13 @@ double residualAt(const ComponentProblem& cp, const SeparableSurface& s, int c, 
   }
   const double vars[2] = {v, u};
   for (const GeneralForce& g : cp.generalForce) f += evaluate(*g.f, vars);
+  return f;
+}
+
+// L X - f of component c at (u, v); *size gets Σ_k |α_k ∂ X| + |f|.
+double residualAt(const ComponentProblem& cp, const SeparableSurface& s, int c, double u, double v, double* size) {
+  const int n = static_cast<int>(cp.alpha.size()) - 1;
+  const double f = forceAt(cp, u, v);
   double sum = -f, mag = std::abs(f);
   for (int k = 0; k <= n; ++k) {
     const double part = cp.alpha[k] * evalComponent(s, c, u, v, 2 * (n - k), 2 * k);
@@ -123,19 +130,10 @@ PdeResidual interiorResidual(const PdeProblem& p, const SeparableSurface& s, int
         const double term = cp.alpha[k] * parts[size_t(k)][q];
         sum[q] += term, mag[q] += std::abs(term);
       }
-    // The force, point by point (a product of a u-polynomial and a v-function, or an
-    // expression in u and v).
+    // The force, point by point.
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) {
-        const double u = us[size_t(i)], v = vs[size_t(j)];
-        double f = 0.0;
-        for (const ForceTerm& t : cp.force) {
-          double q = 0.0;
-          for (size_t k = t.uPoly.size(); k-- > 0;) q = q * u + t.uPoly[k];
-          f += q * t.g.eval(v);
-        }
-        const double vars[2] = {v, u};
-        for (const GeneralForce& g : cp.generalForce) f += evaluate(*g.f, vars);
+        const double f = forceAt(cp, us[size_t(i)], vs[size_t(j)]);
         const size_t q = size_t(j) * m + size_t(i);
         const double r = std::abs(sum[q] - f), size = mag[q] + std::abs(f);
         worst[q] = std::isfinite(size) && std::isfinite(r) && !std::isnan(worst[q]) ? std::max(worst[q], r) : NAN;
