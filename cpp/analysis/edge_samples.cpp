@@ -4,23 +4,31 @@
 
 namespace pdesurf {
 
+namespace {
+// samples points from a0 to a1, both ends exact (as tabulate() spaces a grid line).
+std::vector<double> gridLine(double a0, double a1, int samples) {
+  std::vector<double> x(samples);
+  for (int i = 0; i < samples; ++i) x[i] = i == samples - 1 ? a1 : a0 + (a1 - a0) * i / (samples - 1);
+  return x;
+}
+}  // namespace
+
 std::vector<EdgePoint> edgeSamples(const SeparableSurface& surface, bool alongU, int end, double a0, double a1, int samples) {
   SeparableSurface s = surface;  // the factors are functions of absolute u and v: only the ranges change
   const double sign = end == 0 ? 1.0 : -1.0;
   std::vector<EdgePoint> out(samples);
   auto vec = [](const GridRow& row, int q, size_t i) { return Eigen::Vector3d(row.d[q][0][i], row.d[q][1][i], row.d[q][2][i]); };
+  // Only the edge's own line is tabulated (a pointwise program costs per point).
   if (!alongU) {
     s.v0 = a0, s.v1 = a1;
-    const Tabulation t = tabulate(s, 1, samples - 1, 2);
+    const Tabulation t = tabulateAt(s, {end ? s.u1 : s.u0}, gridLine(a0, a1, samples), 2);
     combineRows(t, [&](int j, const GridRow& row) {
-      const size_t i = end;
-      out[j] = {vec(row, 0, i), vec(row, 2, i), sign * vec(row, 1, i), vec(row, 3, i), vec(row, 5, i), sign * vec(row, 4, i)};
+      out[j] = {vec(row, 0, 0), vec(row, 2, 0), sign * vec(row, 1, 0), vec(row, 3, 0), vec(row, 5, 0), sign * vec(row, 4, 0)};
     });
   } else {
     s.u0 = a0, s.u1 = a1;
-    const Tabulation t = tabulate(s, samples - 1, 1, 2);
-    combineRows(t, [&](int j, const GridRow& row) {
-      if (j != end) return;
+    const Tabulation t = tabulateAt(s, gridLine(a0, a1, samples), {end ? s.v1 : s.v0}, 2);
+    combineRows(t, [&](int, const GridRow& row) {
       for (int i = 0; i < samples; ++i)
         out[i] = {vec(row, 0, i), vec(row, 1, i), sign * vec(row, 2, i), vec(row, 5, i), vec(row, 3, i), sign * vec(row, 4, i)};
     });
@@ -45,12 +53,11 @@ std::vector<EdgePoint> edgeSamplesAt(const SeparableSurface& s, bool alongU, int
     return edgePointFrom(alongU, end, vec(row, 0, i), vec(row, 1, i), vec(row, 2, i), vec(row, 3, i), vec(row, 4, i), vec(row, 5, i));
   };
   if (!alongU) {
-    const Tabulation t = tabulateAt(s, {s.u0, s.u1}, at, 2);
-    combineRows(t, [&](int j, const GridRow& row) { out[size_t(j)] = point(row, size_t(end)); });
+    const Tabulation t = tabulateAt(s, {end ? s.u1 : s.u0}, at, 2);
+    combineRows(t, [&](int j, const GridRow& row) { out[size_t(j)] = point(row, 0); });
   } else {
-    const Tabulation t = tabulateAt(s, at, {s.v0, s.v1}, 2);
-    combineRows(t, [&](int j, const GridRow& row) {
-      if (j != end) return;
+    const Tabulation t = tabulateAt(s, at, {end ? s.v1 : s.v0}, 2);
+    combineRows(t, [&](int, const GridRow& row) {
       for (size_t i = 0; i < at.size(); ++i) out[i] = point(row, i);
     });
   }

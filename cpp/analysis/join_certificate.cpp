@@ -168,8 +168,7 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   const auto sample = part ? openEdgeSamples : edgeSamples;
   const auto B = read ? read(target, m.alongU, m.end, sampleParameters(a0, a1, kJoinSamples, part))
                       : sample(ts, m.alongU, m.end, a0, a1, kJoinSamples);
-  auto P = read ? read(prim, source.alongU, source.end, sampleParameters(p0, p1, kJoinSamples, part))
-                : sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
+  std::vector<EdgePoint> P;
   if (m.eased) {  // the fill's evenly spaced samples, at the edge's parameters they map to
     std::vector<double> at;
     for (int k = 0; k < kJoinSamples; ++k) {
@@ -177,6 +176,9 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
       at.push_back(p0 + (p1 - p0) * sigma);
     }
     P = read ? read(prim, source.alongU, source.end, at) : edgeSamplesAt(prim.surface, source.alongU, source.end, at);
+  } else {
+    P = read ? read(prim, source.alongU, source.end, sampleParameters(p0, p1, kJoinSamples, part))
+             : sample(prim.surface, source.alongU, source.end, p0, p1, kJoinSamples);
   }
   // A reversed Bézier border (version 4) runs over the primary's v backwards.
   if (m.reversed) std::reverse(P.begin(), P.end()), std::swap(p0, p1);

@@ -16,7 +16,10 @@ double GeneralFunction::eval(double v, int k) const {
   // Past the second derivative (normals and curvature need no more) Taylor arithmetic: its
   // cost grows with k², where each symbolic order multiplies the expression.
   if (k > 2) return derivativeAt(*derivs_.front(), ExprVar::V, vars, k);
-  return evaluate(*derivativeExpr(k), vars);
+  if (derivativeExpr(k)->treeSize <= kTreeWalkMax) return evaluate(*derivativeExpr(k), vars);
+  double out = 0.0;
+  evalMany(&v, 1, k, &out);
+  return out;
 }
 
 void GeneralFunction::evalMany(const double* v, size_t n, int k, double* out) const {
@@ -24,9 +27,11 @@ void GeneralFunction::evalMany(const double* v, size_t n, int k, double* out) co
     for (size_t i = 0; i < n; ++i) out[i] = eval(v[i], k);
     return;
   }
-  if (static_cast<int>(programs_.size()) <= k) programs_.resize(k + 1);
-  if (!programs_[k]) programs_[k] = std::make_shared<const ExprProgram>(std::vector<Expr>{derivativeExpr(k)});
-  programs_[k]->run(v, nullptr, n, out);
+  // The lower orders come with it: they are the derivative's own subexpressions.
+  std::vector<double> lower(static_cast<size_t>(k) * n);
+  double* outs[3] = {lower.data(), lower.data() + n, nullptr};
+  outs[k] = out;
+  upTo(k).runAll(v, nullptr, n, outs);
 }
 
 void GeneralFunction::evalManyUpTo(const double* v, size_t n, int maxK, double* const* outs) const {
@@ -34,13 +39,17 @@ void GeneralFunction::evalManyUpTo(const double* v, size_t n, int maxK, double* 
     for (int k = 0; k <= maxK; ++k) evalMany(v, n, k, outs[k]);
     return;
   }
+  upTo(maxK).runAll(v, nullptr, n, outs);
+}
+
+const ExprProgram& GeneralFunction::upTo(int maxK) const {
   if (static_cast<int>(upTo_.size()) <= maxK) upTo_.resize(maxK + 1);
   if (!upTo_[maxK]) {
     std::vector<Expr> roots;
     for (int k = 0; k <= maxK; ++k) roots.push_back(derivativeExpr(k));
     upTo_[maxK] = std::make_shared<const ExprProgram>(roots);
   }
-  upTo_[maxK]->runAll(v, nullptr, n, outs);
+  return *upTo_[maxK];
 }
 
 const Expr& GeneralFunction::derivativeExpr(int k) const {

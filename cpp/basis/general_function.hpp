@@ -25,7 +25,8 @@ class GeneralFunction {
   double eval(double v, int k) const;
   // The same at v[0..n) into out: for k <= 2 one compiled program over all the points (each
   // shared node once per point, each instruction across the points), which is what a Fourier
-  // projection or a grid needs; a fill's loop is a graph of thousands of nodes.
+  // projection or a grid needs; a fill's loop is a graph of thousands of nodes. A large
+  // expression's eval (k <= 2) runs the same program at its one point.
   void evalMany(const double* v, size_t n, int k, double* out) const;
   // Orders 0..maxK (≤ 2) at once: outs[k][i] = d^k g / dv^k (v[i]); one program whose shared
   // nodes (the value's sines and powers recur in its derivatives) run once per point.
@@ -37,8 +38,10 @@ class GeneralFunction {
  private:
   std::string text_;
   mutable std::vector<Expr> derivs_;  // derivs_[k] = k-th derivative, grown on demand
-  mutable std::vector<std::shared_ptr<const ExprProgram>> programs_;  // programs_[k] runs derivs_[k]
-  mutable std::vector<std::shared_ptr<const ExprProgram>> upTo_;      // upTo_[k] runs derivs_[0..k]
+  // One compiled program per highest order, for every caller (point, line, orders at once):
+  // the same derivative compiled once, not once per way of asking.
+  const ExprProgram& upTo(int maxK) const;
+  mutable std::vector<std::shared_ptr<const ExprProgram>> upTo_;  // upTo_[k] runs derivs_[0..k]
 };
 
 }  // namespace pdesurf

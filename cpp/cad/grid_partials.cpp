@@ -22,13 +22,9 @@ SurfaceOnGrid::SurfaceOnGrid(const SeparableSurface& s, std::vector<double> u) :
       terms[size_t(t)].G.tabulate(u_.data(), int(mu), 2, tab.data(), nullptr, &exps);
       for (int a = 0; a < 3; ++a)
         for (Eigen::Index i = 0; i < mu; ++i) G_[size_t(c)][size_t(a)](i, t) = tab[size_t(a) * size_t(mu) + size_t(i)];
-      const VFunction& f = terms[size_t(t)].g;
-      if (f.family == Family::General && !programs_.count(f.general.get()))
-        programs_.emplace(f.general.get(), std::make_shared<const ExprProgram>(std::vector<Expr>{
-                                               f.general->derivativeExpr(0), f.general->derivativeExpr(1), f.general->derivativeExpr(2)}));
     }
     // X, X_u, X_v, X_uu, X_uv, X_vv of the pointwise part: one program, run along each row.
-    if (const Expr& p = s.pointwise[size_t(c)]) pointwise_[size_t(c)] = std::make_shared<const ExprProgram>(partialDerivatives(p, true));
+    pointwise_[size_t(c)] = pointwiseProgramOf(s, c);
   }
 }
 
@@ -54,12 +50,12 @@ GridPartials SurfaceOnGrid::at(const std::vector<double>& v, int count) const {
     for (Eigen::Index t = 0; t < T; ++t) {
       const VFunction& f = terms[size_t(t)].g;
       if (f.family == Family::General) {
-        // g, g', g'' over every v at once: one compiled program per general function.
+        // g, g', g'' over every v at once: the function's own compiled program.
         auto& rows = generalRows[f.general.get()];
         if (rows.empty()) {
           rows.assign(3, std::vector<double>(size_t(mv)));
           double* outs[3] = {rows[0].data(), rows[1].data(), rows[2].data()};
-          programs_.at(f.general.get())->runAll(v.data(), nullptr, size_t(mv), outs);
+          f.general->evalManyUpTo(v.data(), size_t(mv), 2, outs);
         }
         for (int b = 0; b < 3; ++b)
           for (Eigen::Index j = 0; j < mv; ++j) g[size_t(b)](j, t) = rows[size_t(b)][size_t(j)];

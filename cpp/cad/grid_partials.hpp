@@ -33,7 +33,6 @@ class SurfaceOnGrid {
   const SeparableSurface& s_;
   std::vector<double> u_;
   std::array<std::array<Eigen::MatrixXd, 3>, 3> G_;  // [coordinate][derivative]: mu × terms
-  std::map<const void*, std::shared_ptr<const ExprProgram>> programs_;  // per general function: g, g', g''
   std::array<std::shared_ptr<const ExprProgram>, 3> pointwise_;
 };
 // The same for a B-spline surface, from its basis functions' collocation matrices.

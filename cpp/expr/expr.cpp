@@ -194,9 +194,6 @@ double applyFn(ExprFn f, double x) {
 
 namespace {
 
-// A tree walk costs its tree size; past this, a shared DAG runs its compiled program instead.
-constexpr uint64_t kTreeWalkMax = 4096;
-
 double walk(const ExprNode& e, const double* vars) {
   switch (e.op) {
     case Op::Const: return e.value;

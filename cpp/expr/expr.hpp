@@ -62,6 +62,8 @@ double applyFn(ExprFn f, double x);
 
 // vars[0] = v, vars[1] = u. May return NaN or inf; callers check. A small tree is walked;
 // a large DAG runs its compiled program (one pass over its distinct nodes).
+// A tree walk costs its tree size; past kTreeWalkMax, a shared DAG runs a compiled program.
+constexpr uint64_t kTreeWalkMax = 4096;
 double evaluate(const ExprNode& e, const double* vars);
 bool isConstant(const Expr& e);
 bool dependsOn(const Expr& e, ExprVar v);

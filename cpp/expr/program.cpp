@@ -107,8 +107,11 @@ void callFn(ExprFn fn, double* o, const double* a, size_t m) {
 
 void ExprProgram::runAll(const double* v, const double* u, size_t n, double* const* outs) const {
   // Points per block: the registers of one block stay within ~8 MB whatever the program's width.
-  const size_t block = std::max<size_t>(1, std::min<size_t>(256, (size_t{1} << 20) / std::max<uint32_t>(1, registers_)));
-  std::vector<double> scratch(static_cast<size_t>(registers_) * block);
+  const size_t block = std::max<size_t>(1, std::min({n, size_t{256}, (size_t{1} << 20) / std::max<uint32_t>(1, registers_)}));
+  // Every register is written before it is read: the scratch is kept per thread and reused
+  // as it is (clearing and allocating it on each call cost as much as a wide program's run).
+  thread_local std::vector<double> scratch;
+  if (scratch.size() < static_cast<size_t>(registers_) * block) scratch.resize(static_cast<size_t>(registers_) * block);
   for (size_t start = 0; start < n; start += block) {
     const size_t m = std::min(block, n - start);
     for (const Instruction& ins : code_) {

@@ -25,4 +25,11 @@ Eigen::Vector3d evalPoint(const SeparableSurface& s, double u, double v, int du,
   return {evalComponent(s, 0, u, v, du, dv), evalComponent(s, 1, u, v, du, dv), evalComponent(s, 2, u, v, du, dv)};
 }
 
+std::shared_ptr<const ExprProgram> pointwiseProgramOf(const SeparableSurface& s, int c) {
+  if (!s.pointwise[c]) return nullptr;
+  if (s.pointwisePrograms[c] && s.pointwisePartials[c].size() >= 6) return s.pointwisePrograms[c];
+  const auto& pre = s.pointwisePartials[c];
+  return std::make_shared<const ExprProgram>(pre.size() >= 6 ? pre : partialDerivatives(s.pointwise[c], true));
+}
+
 }  // namespace pdesurf

@@ -37,5 +37,8 @@ struct SeparableSurface {
 // ∂^{du+dv} X_c / ∂u^du ∂v^dv at (u, v) for component c (0, 1, 2).
 double evalComponent(const SeparableSurface& s, int c, double u, double v, int du = 0, int dv = 0);
 Eigen::Vector3d evalPoint(const SeparableSurface& s, double u, double v, int du = 0, int dv = 0);
+// The six partials of pointwise[c] as one program: the surface's own when built, else
+// compiled here; nullptr when the component has no pointwise part.
+std::shared_ptr<const ExprProgram> pointwiseProgramOf(const SeparableSurface& s, int c);
 
 }  // namespace pdesurf

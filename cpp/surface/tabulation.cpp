@@ -28,7 +28,9 @@ Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative
 }
 
 Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::vector<double> vs, int maxDerivative) {
-  checkGrid(int(us.size()) - 1, int(vs.size()) - 1);
+  // A single line (one u or one v) is a grid too: an edge's samples tabulate only their edge.
+  if (us.empty() || vs.empty() || us.size() > size_t(kMaxGrid) + 1 || vs.size() > size_t(kMaxGrid) + 1)
+    checkGrid(int(us.size()) - 1, int(vs.size()) - 1);
   Tabulation t;
   const int D = maxDerivative + 1;
   t.depth = D;
@@ -103,7 +105,7 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
     const auto& pre = s.pointwisePartials[c];
     t.pointwise[c] = pre.size() >= Q ? std::vector<Expr>(pre.begin(), pre.begin() + Q) : partialDerivatives(e, maxDerivative >= 2);
     // The surface's own program (all six partials; the rows read the first Q) when it has one.
-    t.pointwiseProgram[c] = pre.size() >= 6 && s.pointwisePrograms[c] ? s.pointwisePrograms[c] : std::make_shared<const ExprProgram>(t.pointwise[c]);
+    t.pointwiseProgram[c] = pre.size() >= 6 ? pointwiseProgramOf(s, c) : std::make_shared<const ExprProgram>(t.pointwise[c]);
   }
   return t;
 }

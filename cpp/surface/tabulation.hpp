@@ -32,7 +32,7 @@ struct Tabulation {
 // Throws Error(GridSize) outside 1..2048 per direction, Error(NonFinite) when a factor is not
 // finite at a grid point. maxDerivative: 1 or 2.
 Tabulation tabulate(const SeparableSurface& s, int nu, int nv, int maxDerivative = 1);
-// The same at given parameters (any order, any spacing: quadrature nodes), 2 to 2049 each.
+// The same at given parameters (any order, any spacing: quadrature nodes), 1 to 2049 each.
 Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> u, std::vector<double> v, int maxDerivative = 1);
 
 constexpr int kMaxGrid = limits::kGrid;
