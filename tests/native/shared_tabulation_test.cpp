@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <set>
 
+#include "analysis/edge_samples.hpp"
+#include "analysis/join_certificate.hpp"
 #include "basis/general_function.hpp"
 #include "methods/measures.hpp"
 #include "test_util.hpp"
@@ -95,4 +97,43 @@ TEST_CASE("the interior residual tabulated once per grid line is the point-by-po
     }
   }
   CHECK(patches > 20);
+}
+
+TEST_CASE("an edge's samples, tabulated on its own line, are its point-by-point partials, on every example's patches") {
+  // The certificate tabulates only the edge it reads (one u or one v), not the grid's other end.
+  size_t edges = 0;
+  for (const char* id : {"you2004-fig4a", "you2004-fig8d", "bottle-solid", "ref-sphere-fillet", "wu2015-fig1a", "ref-pipe-tjoint"}) {
+    INFO(id);
+    const Scene scene = parseScene(readText(examplePath(std::string(id) + ".json")));
+    for (const SolvedPatch& sp : solveScene(scene)) {
+      INFO(sp.patch->name);
+      const SeparableSurface& s = sp.surface;
+      for (bool alongU : {false, true})
+        for (int end : {0, 1}) {
+          const double a0 = alongU ? s.u0 : s.v0, a1 = alongU ? s.u1 : s.v1;
+          const std::vector<EdgePoint> line = edgeSamples(s, alongU, end, a0, a1, 7);
+          std::vector<double> at;
+          for (int k = 0; k < 7; ++k) at.push_back(k == 6 ? a1 : a0 + (a1 - a0) * k / 6);
+          const std::vector<EdgePoint> given = edgeSamplesAt(s, alongU, end, at);
+          const double scale = patchSizeOf(s);
+          for (int k = 0; k < 7; ++k) {
+            const double u = alongU ? at[size_t(k)] : (end ? s.u1 : s.u0), v = alongU ? (end ? s.v1 : s.v0) : at[size_t(k)];
+            const EdgePoint e = edgePointFrom(alongU, end, evalPoint(s, u, v), evalPoint(s, u, v, 1, 0), evalPoint(s, u, v, 0, 1),
+                                              evalPoint(s, u, v, 2, 0), evalPoint(s, u, v, 1, 1), evalPoint(s, u, v, 0, 2));
+            for (const EdgePoint* p : {&line[size_t(k)], &given[size_t(k)]}) {
+              const double tol = 1e-9 * std::max(1.0, scale) * (1.0 + e.ss.norm() + e.ww.norm() + e.sw.norm() + e.s.norm() + e.w.norm());
+              CHECK((p->X - e.X).norm() <= tol);
+              CHECK((p->s - e.s).norm() <= tol);
+              CHECK((p->w - e.w).norm() <= tol);
+              CHECK((p->ss - e.ss).norm() <= tol);
+              CHECK((p->sw - e.sw).norm() <= tol);
+              CHECK((p->ww - e.ww).norm() <= tol);
+            }
+          }
+          ++edges;
+        }
+    }
+  }
+  MESSAGE(edges << " edges");
+  CHECK(edges > 40);
 }
