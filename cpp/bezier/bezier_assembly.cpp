@@ -37,7 +37,7 @@ void bezierNormalNodes(int n, int m, const BezierNormalField& f, int& Nu, int& N
 
 size_t bezierAssemblyWork(int n, int m, int Nu, int Nv) {
   const size_t K = static_cast<size_t>(n + 1) * (m + 1), mv = static_cast<size_t>(m + 1) * (m + 1);
-  return static_cast<size_t>(Nu) * Nv * mv + static_cast<size_t>(Nu) * K * K;
+  return static_cast<size_t>(Nu) * Nv * mv + static_cast<size_t>(Nu) * K * K + K * K * K;
 }
 
 namespace {

@@ -43,8 +43,9 @@ BezierForms assembleBezierForms(const BezierProblem& p, const Eigen::MatrixXd* T
 
 // The node grid size Nu × Nv of the normal and data terms.
 void bezierNormalNodes(int n, int m, const BezierNormalField& f, int& Nu, int& Nv);
-// Work units of one patch's assembly, the quantity limits::kBezierAssembly bounds:
-// Nu·Nv·(m+1)² + Nu·K² for the normal term's node grid (the fairness grid's share is smaller).
+// Work units of one patch's assembly and solve, the quantity limits::kBezierAssembly bounds:
+// Nu·Nv·(m+1)² + Nu·K² for the normal term's node grid (the fairness grid's share is smaller),
+// and K³ for the factorisations (the energy alone, no normals: degree 16 costs 2.4·10⁷).
 size_t bezierAssemblyWork(int n, int m, int Nu, int Nv);
 
 }  // namespace pdesurf

@@ -30,6 +30,10 @@ constexpr int kBezierDegree = 16;
 // 16 with a 256² field: ~0.1 s natively from scratch); the total stops 64 such patches. At the
 // cap, 13 of them: ~1-2 s natively.
 constexpr size_t kBezierAssembly = size_t{1} << 29;
+// Normal fields typed as expressions, summed over a scene's Bezier patches: samples × the
+// operations of each compiled expression (x, y, z and the weights), charged before it runs.
+// 2^27 ≈ 1.3·10^8: e.g. a 256² field of five 200-operation expressions (~0.2 s natively).
+constexpr size_t kFieldSampling = size_t{1} << 27;
 // Expression nodes built to derive the ends given by reference of one scene (version 3),
 // summed over its blends, with the pointwise expressions and partial derivatives of the
 // surfaces they trim along a curve. Counted while the graph is built (expr/budget.hpp): the

@@ -3,6 +3,7 @@
 // normals, given as vectors or as expressions in u and v, with optional per-sample weights).
 #include "bezier/bezier_assembly.hpp"
 #include "expr/parse.hpp"
+#include "expr/program.hpp"
 #include "common/text.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
@@ -30,8 +31,10 @@ std::vector<Eigen::Vector3d> points(const json& j, const std::string& path, cons
   return out;
 }
 
-// A per-sample list: an array of count values or an expression in u and v.
-std::vector<double> sampled(const json& j, const std::string& path, const Resolver& r, int np, int mp) {
+// A per-sample list: an array of count values or an expression in u and v. An expression is
+// compiled once and run over every sample; its samples × instructions are charged to the
+// scene's total (limits::kFieldSampling) before it runs.
+std::vector<double> sampled(const json& j, const std::string& path, const Resolver& r, int np, int mp, size_t& samplingWork) {
   const size_t count = static_cast<size_t>(np + 1) * (mp + 1);
   std::vector<double> out;
   if (j.is_array()) {
@@ -46,28 +49,38 @@ std::vector<double> sampled(const json& j, const std::string& path, const Resolv
   } catch (const Error& err) {
     fail(err.code(), path, err.what());
   }
+  const ExprProgram program(std::vector<Expr>{e});
+  samplingWork += count * program.instructions();
+  if (samplingWork > limits::kFieldSampling)
+    fail(ErrorCode::TooLarge, path,
+         "sampling '" + clipText(text, 60) + "' (" + std::to_string(program.instructions()) + " operations) on " + std::to_string(count) +
+             " points brings the scene's normal fields to " + numberText(double(samplingWork)) + " operations, over the limit " +
+             numberText(double(limits::kFieldSampling)) + " (use coarser grids, shorter expressions or fewer patches)");
+  std::vector<double> us, vs;
   for (int i = 0; i <= np; ++i)
-    for (int k = 0; k <= mp; ++k) {
-      const double vars[2] = {static_cast<double>(k) / mp, static_cast<double>(i) / np};  // v, u
-      const double x = evaluate(*e, vars);
-      if (!std::isfinite(x)) fail(ErrorCode::NonFinite, path, "'" + text + "' is not finite at (u, v) = (" + numberText(vars[1]) + ", " + numberText(vars[0]) + ")");
-      out.push_back(x);
-    }
+    for (int k = 0; k <= mp; ++k) us.push_back(static_cast<double>(i) / np), vs.push_back(static_cast<double>(k) / mp);
+  out.resize(count);
+  program.run(vs.data(), us.data(), count, out.data());
+  for (size_t q = 0; q < count; ++q)
+    if (!std::isfinite(out[q]))
+      fail(ErrorCode::NonFinite, path, "'" + text + "' is not finite at (u, v) = (" + numberText(us[q]) + ", " + numberText(vs[q]) + ")");
   return out;
 }
 
-// Adds this patch's assembly work (bezier_assembly.hpp) to the scene's running total, before
-// the normal field's samples are read; refuses the scene once the total passes the limit.
-void addAssemblyWork(const BezierProblem& b, const std::string& path, size_t& total) {
+// Adds this patch's assembly and factorisation work (bezier_assembly.hpp) to the scene's
+// running total, before the normal field's samples are read; refuses the scene once the total
+// passes the limit. normals: false for a patch without guiding normals.
+void addAssemblyWork(const BezierProblem& b, const std::string& path, bool normals, size_t& total) {
   int Nu = 0, Nv = 0;
   bezierNormalNodes(b.n, b.m, b.normals, Nu, Nv);
   const size_t work = bezierAssemblyWork(b.n, b.m, Nu, Nv);
   total += work;
   if (total > limits::kBezierAssembly)
     fail(ErrorCode::TooLarge, path,
-         "a normal field on " + std::to_string(Nu) + "x" + std::to_string(Nv) + " nodes at degree " + std::to_string(b.n) + "x" + std::to_string(b.m) +
-             " is " + std::to_string(work) + " units of assembly work; with the Bezier patches before it, " + std::to_string(total) +
-             ", over the limit " + std::to_string(limits::kBezierAssembly) + " per scene (use coarser normal grids, lower degrees or fewer patches)");
+         "a patch of degree " + std::to_string(b.n) + "x" + std::to_string(b.m) +
+             (normals ? " with a normal field on " + std::to_string(Nu) + "x" + std::to_string(Nv) + " nodes" : std::string()) + " is " +
+             std::to_string(work) + " units of assembly work; with the Bezier patches before it, " + std::to_string(total) + ", over the limit " +
+             std::to_string(limits::kBezierAssembly) + " per scene (use coarser normal grids, lower degrees or fewer patches)");
 }
 
 // Version 4: "borders": {"u0": {"surface", "at", "reverse"}, ...}, any of the four edges.
@@ -96,7 +109,7 @@ void parseBorders(const json& j, const std::string& path, int version, Patch& pa
 
 }  // namespace
 
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, size_t& assemblyWork) {
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, BezierWork& work) {
   allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals", "borders"});
   if (j.contains("borders")) parseBorders(j["borders"], path, version, patch);
   bool allFour = true;
@@ -122,6 +135,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
       fail(ErrorCode::InvalidField, path + ".lambda", "lambda weighs the guiding normals, and this patch has none: give \"normals\" or set lambda to 0");
     f.n1 = f.m1 = 0;
     f.vectors = {Eigen::Vector3d(0, 0, 1)};  // weighed by lambda = 0: no effect
+    addAssemblyWork(b, path + ".degree", false, work.assembly);  // its energy and factorisation still count
     return;
   }
   const json& nj = require(j, "normals", path);
@@ -130,7 +144,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
     allowOnly(nj, np, {"degree", "vectors"});
     const auto d = pair(nj["degree"], np + ".degree", 0, 24);
     f.n1 = d[0], f.m1 = d[1];
-    addAssemblyWork(b, np + ".degree", assemblyWork);
+    addAssemblyWork(b, np + ".degree", true, work.assembly);
     f.vectors = points(require(nj, "vectors", np), np + ".vectors", r, static_cast<size_t>(f.n1 + 1) * (f.m1 + 1));
   } else {
     allowOnly(nj, np, {"grid", "vectors", "field", "lambda_weights", "gamma_weights"});
@@ -138,7 +152,7 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
     const auto g = pair(require(nj, "grid", np), np + ".grid", 1, 256);
     f.np = g[0], f.mp = g[1];
     const size_t count = static_cast<size_t>(f.np + 1) * (f.mp + 1);
-    addAssemblyWork(b, np + ".grid", assemblyWork);
+    addAssemblyWork(b, np + ".grid", true, work.assembly);
     if (nj.contains("vectors") == nj.contains("field")) fail(ErrorCode::InvalidField, np, "give either \"vectors\" or \"field\"");
     if (nj.contains("vectors")) {
       f.vectors = points(nj["vectors"], np + ".vectors", r, count);
@@ -147,11 +161,11 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
       allowOnly(nj["field"], fp, {"x", "y", "z"});
       std::array<std::vector<double>, 3> c;
       for (int k = 0; k < 3; ++k)
-        c[k] = sampled(require(nj["field"], kAxis[k], fp), fp + "." + kAxis[k], r, f.np, f.mp);
+        c[k] = sampled(require(nj["field"], kAxis[k], fp), fp + "." + kAxis[k], r, f.np, f.mp, work.sampling);
       for (size_t q = 0; q < count; ++q) f.vectors.emplace_back(c[0][q], c[1][q], c[2][q]);
     }
-    if (nj.contains("lambda_weights")) f.lambdaWeight = sampled(nj["lambda_weights"], np + ".lambda_weights", r, f.np, f.mp);
-    if (nj.contains("gamma_weights")) f.gammaWeight = sampled(nj["gamma_weights"], np + ".gamma_weights", r, f.np, f.mp);
+    if (nj.contains("lambda_weights")) f.lambdaWeight = sampled(nj["lambda_weights"], np + ".lambda_weights", r, f.np, f.mp, work.sampling);
+    if (nj.contains("gamma_weights")) f.gammaWeight = sampled(nj["gamma_weights"], np + ".gamma_weights", r, f.np, f.mp, work.sampling);
   }
 }
 

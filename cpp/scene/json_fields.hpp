@@ -16,6 +16,12 @@
 
 namespace pdesurf::scene_json {
 
+// The work of a scene's Bézier patches so far (limits::kBezierAssembly, limits::kFieldSampling).
+struct BezierWork {
+  size_t assembly = 0;  // assembly and factorisation units (bezierAssemblyWork)
+  size_t sampling = 0;  // normal-field samples × the operations of their expressions
+};
+
 using json = nlohmann::json;
 constexpr int kMaxTerms = 256;
 constexpr int kMaxPower = 24;

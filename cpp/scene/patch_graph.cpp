@@ -1,6 +1,7 @@
 #include "scene/patch_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -163,6 +164,65 @@ std::array<double, 2> edgeRange(const Patch& p) {
 std::string edgeName(const Patch& p, int edge) {
   if (p.kind == PatchKind::Primary) return edge ? "t1" : "t0";
   return kBezierEdge[edge];
+}
+
+namespace {
+
+// Where on its patch's edge a join lies: the edge (a surface's trimline apart from its
+// borders) and the interval of the edge's parameter it covers.
+struct EdgeSpan {
+  int edge = 0;
+  double from = 0, to = 0;
+  const Meets* meets = nullptr;
+};
+
+EdgeSpan spanOf(const Scene& scene, const Patch& p, const Meets& m) {
+  EdgeSpan e;
+  e.meets = &m;
+  e.edge = m.curve ? 4 : m.sourceEdge >= 0 ? m.sourceEdge : (m.atT1 ? 1 : 0);
+  std::array<double, 2> range = edgeRange(p);
+  if (!std::isnan(m.v0)) {
+    range = {m.v0, m.v1};
+  } else if (p.kind == PatchKind::Primary) {
+    // A pde blend shares v with the surface: its own v-range.
+    const Patch* target = scene.find(m.patch);
+    if (target && target->kind == PatchKind::Pde && !target->fill.given) range = {target->pde.v0, target->pde.v1};
+  }
+  e.from = std::min(range[0], range[1]), e.to = std::max(range[0], range[1]);
+  return e;
+}
+
+size_t sceneIndex(const Scene& scene, const std::string& name) {
+  const Patch* p = scene.find(name);
+  return p ? static_cast<size_t>(p - scene.patches.data()) : scene.patches.size();
+}
+
+std::string joinName(size_t index, const Meets& m) {
+  return m.by.empty() ? "patches[" + std::to_string(index) + "].meets" : m.by;
+}
+
+}  // namespace
+
+void checkEdgesMetOnce(const Scene& scene) {
+  for (size_t i = 0; i < scene.patches.size(); ++i) {
+    const Patch& p = scene.patches[i];
+    std::vector<EdgeSpan> spans;
+    for (const Meets& m : p.meets) spans.push_back(spanOf(scene, p, m));
+    std::sort(spans.begin(), spans.end(), [](const EdgeSpan& a, const EdgeSpan& b) { return a.edge != b.edge ? a.edge < b.edge : a.from < b.from; });
+    const auto range = edgeRange(p);
+    const double slack = 1e-9 * std::max({1.0, std::abs(range[0]), std::abs(range[1])});
+    for (size_t k = 1; k < spans.size(); ++k) {
+      const EdgeSpan &a = spans[k - 1], &b = spans[k];
+      if (a.edge != b.edge || b.from >= a.to - slack) continue;
+      // The later of the two in the scene is the one refused.
+      const bool aFirst = sceneIndex(scene, a.meets->patch) < sceneIndex(scene, b.meets->patch) || (a.meets->patch == b.meets->patch && a.meets < b.meets);
+      const Meets &first = aFirst ? *a.meets : *b.meets, &second = aFirst ? *b.meets : *a.meets;
+      const std::string edge = a.edge == 4 ? "the curve trimming '" + p.name + "'" : "edge " + edgeName(p, a.edge) + " of '" + p.name + "'";
+      fail(ErrorCode::InvalidField, joinName(i, second),
+           edge + " is already met by " + joinName(i, first) + " ('" + first.patch + "') over [" + number(std::max(a.from, b.from)) + ", " +
+               number(std::min(a.to, b.to)) + "]: three sheets would meet along it");
+    }
+  }
 }
 
 void linkPatches(Scene& scene) {

@@ -11,6 +11,12 @@ namespace pdesurf {
 // a cycle is named patch by patch ("a cycle of references: 'a' -> 'b' -> 'a'").
 void linkPatches(Scene& scene);
 
+// Every edge is met by one other patch at most over any part of it: two would make three
+// sheets meet along it (a non-manifold model the certificate would pass join by join). Parts
+// may touch (a fill's sides end where the next begins). Throws Error(InvalidField) naming
+// the later reference and the earlier one. Run once every join is recorded.
+void checkEdgesMetOnce(const Scene& scene);
+
 // The parameter range of a patch's edge (kBezierEdge's order; a surface's t0/t1 as u0/u1):
 // a surface's or pde patch's v-range, a Bézier border's [0, 1].
 std::array<double, 2> edgeRange(const Patch& p);

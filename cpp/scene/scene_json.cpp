@@ -23,9 +23,10 @@ namespace pdesurf {
 using namespace scene_json;
 
 // In scene/bezier_json.cpp.
-// Adds the patch's assembly work to assemblyWork, the scene's total (limits::kBezierAssembly).
+// Adds the patch's assembly work and its normal field's sampling to the scene's totals
+// (limits::kBezierAssembly, limits::kFieldSampling).
 // Version 4: its "borders" (kept in patch.borders); the control_net may then be left out.
-void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, size_t& assemblyWork);
+void parseBezierPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch, BezierWork& work);
 // In scene/pde_json.cpp.
 void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 // In scene/fill_json.cpp (version 4).
@@ -224,7 +225,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
   if (patches.empty() && scene.version < 4) fail(ErrorCode::InvalidField, "patches", "expected a non-empty array (an empty scene needs version 4)");
   if (patches.size() > limits::kPatches) fail(ErrorCode::TooLarge, "patches", "more than " + std::to_string(limits::kPatches) + " patches");
   std::set<std::string> names;
-  size_t assemblyWork = 0;  // over the Bezier patches so far
+  BezierWork bezierWork;  // over the Bezier patches so far
   for (size_t i = 0; i < patches.size(); ++i) {
     const std::string path = "patches[" + std::to_string(i) + "]";
     const json& pj = patches[i];
@@ -247,7 +248,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     } else if (kind == "bezier" && scene.version >= 2) {
       patch.kind = PatchKind::Bezier;
       try {
-        parseBezierPatch(pj, path, r, scene.version, patch, assemblyWork);
+        parseBezierPatch(pj, path, r, scene.version, patch, bezierWork);
         // A net left out (four borders by reference) is checked once deriveBorders has built it.
         if (!patch.bezier.initial.empty()) validateBezierProblem(patch.bezier);
       } catch (const Error& e) {
@@ -284,6 +285,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
         fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");
       checkJoinInterval(scene.patches[i], m, *target, mp);
     }
+  checkEdgesMetOnce(scene);
   return scene;
 }
 

@@ -85,6 +85,23 @@ def heavy_tube_fill(parts):
     borders = [{'patch': 'tube', 'at': 't0', 'range': [2 * math.pi * k / parts, 2 * math.pi * (k + 1) / parts]} for k in range(parts)]
     return {'format': 'pdesurf-scene', 'version': 4, 'patches': [tube, {'name': 'cap', 'kind': 'fill', 'borders': borders}]}
 
+strips = load('examples/fill-four-strips.json')
+def strips_blend_on_fill_border(d):
+    d['patches'].append({'name': 'blend', 'kind': 'pde', 'v_range': [-0.5, 0.5],
+                         'ends': {'u0': {'surface': 'west', 'at': 't0'}, 'u1': {'surface': 'east', 'at': 't0'}}})
+def strips_two_fills(d):
+    second = copy.deepcopy(d['patches'][0]); second['name'] = 'fill2'; d['patches'].insert(1, second)
+def two_chains_one_edge(d):
+    d['patches'].append({'name': 'sheet', 'kind': 'pde', 'v_range': [0, '2*pi'], 'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'surface': 'neck', 'at': 't1'}}})
+    d['patches'].append({'name': 'sheet2', 'kind': 'pde', 'v_range': [0, '2*pi'], 'ends': {'u0': {'patch': 'shoulder', 'at': 'u1'}, 'u1': {'surface': 'neck', 'at': 't1'}}})
+
+def bezier_heavy_fields(d):
+    heavy = '+'.join(f'sin({k}*u+v)*exp({k}*v-u)' for k in range(1, 41))
+    p = bezier_patch(d)
+    p['normals'] = {'grid': [256, 256], 'field': {'x': heavy, 'y': heavy + '+1', 'z': heavy + '+2'}}
+    second = copy.deepcopy(p); second['name'] = p['name'] + '2'
+    d['patches'].append(second)
+
 # Cases measured by the CAD export: `export -o x.step` in the CLI, exportCad in the module.
 cad = [
     ('cad-heavy-fill', heavy_tube_fill(3), 16, 'TooLarge', 'the CAD fit of the scene would need more than 1e+10 units of work',
@@ -148,6 +165,15 @@ cases = [
      'InvalidField', "patches[0].ends.u0.at: the trimline t = ", 'issue 38 #15: a pole of tau too narrow for the samples was accepted on an 8x8 grid and NonFinite, naming no end, on 4x6'),
     ('chain-both-ends-one-edge', with_(bottle, chain_both_ends_one_edge), 16, 'InvalidField', 'would start and end on the same edge',
      'issue 38 #11: both ends of one patch continuing u1 of the shoulder (three sheets on one edge) were accepted'),
+    ('bezier-field-sampling', with_(bez, bezier_heavy_fields), 16, 'TooLarge', "patches[1].normals.field.z: sampling",
+     "issue 38 re-attack: normal fields typed as 1 KB expressions on 256x256 grids were sampled point by point without a budget (64 patches: 34 s, also from a 5 KB link)"),
+    ('three-sheets-blend-on-bezier-border', with_(strips, strips_blend_on_fill_border), 16, 'InvalidField',
+     "patches[9].ends.u0: edge t0 of 'west' is already met by patches[0].borders.u0 ('fill')",
+     'issue 38 re-attack: a blend and a Bezier fill on one strip border (two surfaces in one hole, three sheets on an edge) were both certified'),
+    ('three-sheets-two-bezier-fills', with_(strips, strips_two_fills), 16, 'InvalidField', 'three sheets would meet along it',
+     'issue 38 re-attack: two Bezier fills of one hole: all 8 joins certified, the second fill a body of its own'),
+    ('three-sheets-two-chains', with_(bottle, two_chains_one_edge), 16, 'InvalidField', 'is already met by patches[5].ends',
+     'issue 38 re-attack: two patches continuing one edge (each alone fine) were both certified'),
     ('chain-v-range-one-ulp', with_(bottle, chain_v_range_one_ulp), 16, 'InvalidField', '6.2831853071795871] differs from',
      'issue 38 messages: a v_range one ulp off 2*pi was "[0, 6.28319] differs from [0, 6.28319]"'),
 ]

@@ -13,6 +13,7 @@
 #include "bezier/tensor_gram.hpp"
 #include "common/errors.hpp"
 #include "common/limits.hpp"
+#include "expr/parse.hpp"
 #include "scene/scene.hpp"
 #include "test_util.hpp"
 
@@ -184,8 +185,9 @@ TEST_CASE("bezier assembly: the work bound counts the tensor-product cost") {
   f.discrete = true, f.np = f.mp = 256;
   bezierNormalNodes(16, 16, f, Nu, Nv);
   CHECK((Nu == 257 && Nv == 257));
-  // 257² samples × 17² + 257 × 289²: degree 16 with the largest discrete field.
-  CHECK(bezierAssemblyWork(16, 16, Nu, Nv) == size_t{66049} * 289 + size_t{257} * 289 * 289);
+  // 257² samples × 17² + 257 × 289² + 289³ (the factorisations): degree 16 with the largest
+  // discrete field.
+  CHECK(bezierAssemblyWork(16, 16, Nu, Nv) == size_t{66049} * 289 + size_t{257} * 289 * 289 + size_t{289} * 289 * 289);
   f = {};
   f.n1 = 24, f.m1 = 3;
   bezierNormalNodes(16, 10, f, Nu, Nv);
@@ -222,4 +224,67 @@ TEST_CASE("bezier assembly: degree 16 with a 256² field is accepted; the scene'
   }
   CHECK(error.rfind("TooLarge: patches[" + std::to_string(fit) + "].normals.grid: ", 0) == 0);
   CHECK(error.find("units of assembly work") != std::string::npos);
+}
+
+TEST_CASE("bezier normal fields: expressions are sampled as the point-by-point values, under the scene's sampling budget") {
+  auto doc = nlohmann::json::parse(pdesurf::testing::readText(pdesurf::testing::examplePath("wu2015-fig1a.json")));
+  nlohmann::json patch = doc["patches"][0];
+  const std::string x = "sin(3*u + v)*exp(v - u)", y = "0.2*u*v^2", z = "1 + cos(u*v)";
+  patch["normals"] = {{"grid", {12, 9}}, {"field", {{"x", x}, {"y", y}, {"z", z}}}};
+  doc["patches"] = nlohmann::json::array({patch});
+  const Scene typed = parseScene(doc.dump());
+  const BezierNormalField& f = typed.patches[0].bezier.normals;
+  REQUIRE(f.vectors.size() == 13 * 10);
+  const Expr ex = parseExpression(x, {}, AllowedVariables{true, true}), ey = parseExpression(y, {}, AllowedVariables{true, true}),
+             ez = parseExpression(z, {}, AllowedVariables{true, true});
+  for (int i = 0; i <= 12; ++i)
+    for (int k = 0; k <= 9; ++k) {
+      const double vars[2] = {k / 9.0, i / 12.0};  // v, u
+      const Eigen::Vector3d& n = f.vectors[size_t(i) * 10 + size_t(k)];
+      CHECK(n.x() == evaluate(*ex, vars));
+      CHECK(n.y() == evaluate(*ey, vars));
+      CHECK(n.z() == evaluate(*ez, vars));
+    }
+  // Long expressions on the largest grid: refused before they are sampled, by the scene's total.
+  std::string heavy = "0";
+  for (int k = 1; k <= 40; ++k) heavy += "+sin(" + std::to_string(k) + "*u+v)*exp(" + std::to_string(k) + "*v-u)";
+  patch["normals"] = {{"grid", {256, 256}}, {"field", {{"x", heavy}, {"y", heavy + "+1"}, {"z", heavy + "+2"}}}};
+  doc["patches"] = nlohmann::json::array();
+  for (int k = 0; k < 8; ++k) {
+    patch["name"] = "p" + std::to_string(k);
+    doc["patches"].push_back(patch);
+  }
+  std::string error;
+  try {
+    parseScene(doc.dump());
+  } catch (const Error& e) {
+    error = std::string(errorCodeName(e.code())) + ": " + e.what();
+  }
+  CAPTURE(error);
+  CHECK(error.rfind("TooLarge: patches[", 0) == 0);
+  CHECK(error.find("].normals.field.") != std::string::npos);
+  CHECK(error.find("over the limit") != std::string::npos);
+}
+
+TEST_CASE("bezier assembly: a patch without normals still counts its energy and factorisation") {
+  // Issue 38 re-attack: 64 degree-16 membranes without normals charged nothing (wasm 5 s).
+  const size_t perPatch = bezierAssemblyWork(16, 16, 16, 16);
+  const int fit = static_cast<int>(limits::kBezierAssembly / perPatch);
+  nlohmann::json patch = {{"kind", "bezier"}, {"energy", "membrane"}, {"degree", {16, 16}}, {"gamma", 1}, {"control_net", nlohmann::json::array()}};
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 16; ++j) patch["control_net"].push_back({i / 16.0, j / 16.0, 0.0});
+  nlohmann::json doc = {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", nlohmann::json::array()}};
+  for (int k = 0; k <= fit; ++k) {
+    patch["name"] = "p" + std::to_string(k);
+    doc["patches"].push_back(patch);
+  }
+  std::string error;
+  try {
+    parseScene(doc.dump());
+  } catch (const Error& e) {
+    error = std::string(errorCodeName(e.code())) + ": " + e.what();
+  }
+  CAPTURE(error);
+  CHECK(fit >= 16);
+  CHECK(error.rfind("TooLarge: patches[" + std::to_string(fit) + "].degree: a patch of degree 16x16 is ", 0) == 0);
 }

@@ -139,10 +139,12 @@ TEST_CASE("a fill's trimline curve: one curve per surface, shared with a blend's
     CHECK(r.ok);
     CHECK(r.joins.size() == 3);
   }
-  // The same curve met by a blend's end and a fill: one trim.
+  // The same curve met by a blend's end and a fill over all of it: one trim, but three sheets
+  // along the curve (the trimmed tube, the cap and the skirt) - refused by name.
   const json sameCurveBlend = {{"name", "skirt"}, {"kind", "pde"}, {"v_range", {0, "2*pi"}},
                                {"ends", {{"u0", {{"surface", "tube"}, {"at", curve}}}, {"u1", {{"surface", "top"}, {"at", "t0"}}}}}};
-  CHECK_NOTHROW(parseScene(scene({top, sameCurveBlend}, curve)));
+  CHECK(parseErrorOf(scene({top, sameCurveBlend}, curve)) ==
+        "InvalidField: patches[3].ends.u0: the curve trimming 'tube' is already met by patches[1].borders[0] ('cap') over [0, 6.28319]: three sheets would meet along it");
   // A second, different curve on the same surface.
   const json otherCurveBlend = {{"name", "skirt"}, {"kind", "pde"}, {"v_range", {0, "2*pi"}},
                                 {"ends", {{"u0", {{"surface", "tube"}, {"at", {{"t", "1.5"}}}}}, {"u1", {{"surface", "top"}, {"at", "t0"}}}}}};
