@@ -5,6 +5,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "common/errors.hpp"
+#include "common/text.hpp"
 #include "surface/mesh.hpp"
 
 namespace pdesurf {
@@ -80,20 +82,23 @@ int cellDistance(int a, int b, int n, bool closed) {
   return closed ? std::min(d, n - d) : d;
 }
 
-}  // namespace
-
-std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
-  grid = std::min(grid, kCrossingGrid);  // bounded before the work
-  const int P = static_cast<int>(solved.size());
-  std::vector<PatchGrid> grids(P);
+// Every patch's grid × grid mesh as triangles (two per cell), its grid's seams noted.
+struct Meshes {
+  std::vector<PatchGrid> grids;
   std::vector<Tri> tris;
-  const double tol = 1e-9 * size;
   double edgeSum = 0.0;
+};
+
+Meshes meshesOf(const std::vector<SolvedPatch>& solved, int grid, double tol) {
+  const int P = static_cast<int>(solved.size());
+  Meshes m;
+  m.grids.resize(P);
+  m.tris.reserve(static_cast<size_t>(P) * 2 * grid * grid);
   for (int p = 0; p < P; ++p) {
     const SeparableSurface& s = solved[p].surface;
     const GridSamples g = sampleGrid(s, grid, grid);
     auto at = [&](int i, int j) { return Eigen::Vector3d(&g.X[3 * (static_cast<size_t>(j) * (grid + 1) + i)]); };
-    PatchGrid& pg = grids[p];
+    PatchGrid& pg = m.grids[p];
     pg = {solved[p].patch, s.u0, s.u1, s.v0, s.v1};
     pg.closedU = pg.closedV = true;
     for (int k = 0; k <= grid; ++k) {
@@ -105,11 +110,82 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
         const Eigen::Vector3d a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
         for (const auto& t3 : {std::array<Eigen::Vector3d, 3>{a, b, c}, std::array<Eigen::Vector3d, 3>{a, c, d}}) {
           Tri t{p, i, j, t3[0], t3[1], t3[2], t3[0].cwiseMin(t3[1]).cwiseMin(t3[2]), t3[0].cwiseMax(t3[1]).cwiseMax(t3[2])};
-          edgeSum += (t.hi - t.lo).norm();
-          tris.push_back(t);
+          m.edgeSum += (t.hi - t.lo).norm();
+          m.tris.push_back(t);
         }
       }
   }
+  return m;
+}
+
+// Triangles of a uniform spatial hash's cells (about twice a triangle's size), and the pairs
+// the test would compare: Σ n(n-1)/2 over the cells, known before any pair is compared.
+struct Hash {
+  double h = 1.0;
+  std::unordered_map<int64_t, std::vector<int>> buckets;
+  double pairs = 0.0;
+  static int64_t key(int x, int y, int z) { return (static_cast<int64_t>(x) * 73856093) ^ (static_cast<int64_t>(y) * 19349663) ^ (static_cast<int64_t>(z) * 83492791); }
+  int cellOf(double x) const { return static_cast<int>(std::floor(x / h)); }
+};
+
+Hash hashOf(const Meshes& m, double size) {
+  Hash hash;
+  hash.h = std::max(2.0 * m.edgeSum / std::max<size_t>(1, m.tris.size()), 1e-12 * size);
+  for (int k = 0; k < static_cast<int>(m.tris.size()); ++k) {
+    const Tri& t = m.tris[k];
+    for (int x = hash.cellOf(t.lo.x()); x <= hash.cellOf(t.hi.x()); ++x)
+      for (int y = hash.cellOf(t.lo.y()); y <= hash.cellOf(t.hi.y()); ++y)
+        for (int z = hash.cellOf(t.lo.z()); z <= hash.cellOf(t.hi.z()); ++z) hash.buckets[Hash::key(x, y, z)].push_back(k);
+  }
+  for (const auto& [key, b] : hash.buckets) hash.pairs += double(b.size()) * (double(b.size()) - 1) / 2;
+  return hash;
+}
+
+// The densest cell's first two patches, for the error when the pairs stay over the limit.
+std::string densestPair(const Meshes& m, const Hash& hash, const std::vector<SolvedPatch>& solved) {
+  const std::vector<int>* densest = nullptr;
+  for (const auto& [key, b] : hash.buckets)
+    if (!densest || b.size() > densest->size()) densest = &b;
+  if (!densest || densest->empty()) return "";
+  const int a = m.tris[size_t(densest->front())].patch;
+  for (int k : *densest)
+    if (m.tris[size_t(k)].patch != a) return "'" + solved[a].patch->name + "' and '" + solved[m.tris[size_t(k)].patch].patch->name + "'";
+  return "'" + solved[a].patch->name + "' with itself";
+}
+
+// All three corners of x at corners of y: the two patches coincide there.
+bool sameTriangle(const Tri& x, const Tri& y, double tol) {
+  for (const Eigen::Vector3d* p : {&x.a, &x.b, &x.c}) {
+    bool found = false;
+    for (const Eigen::Vector3d* q : {&y.a, &y.b, &y.c}) found = found || (*p - *q).cwiseAbs().maxCoeff() <= tol;
+    if (!found) return false;
+  }
+  return (x.b - x.a).cross(x.c - x.a).norm() > tol * tol;  // a cell that is a point or a line covers nothing
+}
+
+}  // namespace
+
+std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
+  const int P = static_cast<int>(solved.size());
+  const double tol = 1e-9 * size;
+  // Bounded before the work: at most kCrossingGrid cells a side, kCrossingTriangles in all
+  // (the aeroplane at 256² held 2.9 M triangles, 608 MB), then made coarser while the hash's pairs
+  // exceed kCrossingPairs (patches lying on each other put every triangle in a few cells).
+  grid = std::min({grid, kCrossingGrid, std::max(kMinCrossingGrid, static_cast<int>(std::sqrt(double(kCrossingTriangles) / (2.0 * std::max(1, P)))))});
+  Meshes meshes = meshesOf(solved, grid, tol);
+  Hash hash = hashOf(meshes, size);
+  while (hash.pairs > double(kCrossingPairs)) {
+    if (grid <= kMinCrossingGrid)
+      throw Error(ErrorCode::TooLarge, "the crossing test would compare " + numberText(hash.pairs) + " triangle pairs on a " + std::to_string(grid) + "x" +
+                                           std::to_string(grid) + " mesh per patch, over the limit " + numberText(double(kCrossingPairs)) +
+                                           ": patches lie on one another (" + densestPair(meshes, hash, solved) + ")");
+    // Pairs grow as the grid's square: a grid that should bring them under the limit.
+    grid = std::max(kMinCrossingGrid, std::min(grid - 1, static_cast<int>(0.9 * grid * std::sqrt(double(kCrossingPairs) / hash.pairs))));
+    meshes = meshesOf(solved, grid, tol);
+    hash = hashOf(meshes, size);
+  }
+  const std::vector<PatchGrid>& grids = meshes.grids;
+  const std::vector<Tri>& tris = meshes.tris;
   // Whether triangle t of patch p lies in the cell row along a join with patch q (a pair
   // may share several joins: both ends of a blend on one surface).
   auto skipped = [&](const Tri& t, int q) {
@@ -123,18 +199,11 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
         if (m.patch == qq.name && t.i == (m.atT1 ? grid - 1 : 0)) return true;
     return false;
   };
-  // Uniform spatial hash with cells about twice a triangle's size.
-  const double h = std::max(2.0 * edgeSum / std::max<size_t>(1, tris.size()), 1e-12 * size);
-  auto key = [&](int x, int y, int z) { return (static_cast<int64_t>(x) * 73856093) ^ (static_cast<int64_t>(y) * 19349663) ^ (static_cast<int64_t>(z) * 83492791); };
-  auto cellOf = [&](double x) { return static_cast<int>(std::floor(x / h)); };
-  std::unordered_map<int64_t, std::vector<int>> buckets;
-  for (int k = 0; k < static_cast<int>(tris.size()); ++k) {
-    const Tri& t = tris[k];
-    for (int x = cellOf(t.lo.x()); x <= cellOf(t.hi.x()); ++x)
-      for (int y = cellOf(t.lo.y()); y <= cellOf(t.hi.y()); ++y)
-        for (int z = cellOf(t.lo.z()); z <= cellOf(t.hi.z()); ++z) buckets[key(x, y, z)].push_back(k);
-  }
+  const auto& buckets = hash.buckets;
+  auto key = Hash::key;
+  auto cellOf = [&](double x) { return hash.cellOf(x); };
   std::vector<Crossing> found;
+  std::unordered_map<int64_t, size_t> foundAt;  // (patch, other) -> its entry in found
   auto record = [&](const Tri& x, const Tri& y) {
     const Tri& a = solved[x.patch].patch->kind == PatchKind::Primary ? y : x;  // name the blend first
     const Tri& b = &a == &x ? y : x;
@@ -143,13 +212,14 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
       return std::array<double, 2>{lo + (hi - lo) * cell / grid, lo + (hi - lo) * (cell + 1) / grid};
     };
     auto grow = [](std::array<double, 2>& r, const std::array<double, 2>& s) { r[0] = std::min(r[0], s[0]), r[1] = std::max(r[1], s[1]); };
-    for (Crossing& c : found)
-      if (c.patch == ga.patch->name && c.other == gb.patch->name) {
-        grow(c.u, range(ga.u0, ga.u1, a.i)), grow(c.v, range(ga.v0, ga.v1, a.j));
-        grow(c.otherU, range(gb.u0, gb.u1, b.i)), grow(c.otherV, range(gb.v0, gb.v1, b.j));
-        ++c.triangles;
-        return;
-      }
+    const auto [at, fresh] = foundAt.try_emplace(int64_t(a.patch) * P + b.patch, found.size());
+    if (!fresh) {
+      Crossing& c = found[at->second];
+      grow(c.u, range(ga.u0, ga.u1, a.i)), grow(c.v, range(ga.v0, ga.v1, a.j));
+      grow(c.otherU, range(gb.u0, gb.u1, b.i)), grow(c.otherV, range(gb.v0, gb.v1, b.j));
+      ++c.triangles;
+      return;
+    }
     found.push_back({ga.patch->name, gb.patch->name, range(ga.u0, ga.u1, a.i), range(ga.v0, ga.v1, a.j), range(gb.u0, gb.u1, b.i),
                      range(gb.v0, gb.v1, b.j), 1});
   };
@@ -174,7 +244,11 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
             } else if (skipped(t, u.patch) || skipped(u, t.patch)) {
               continue;
             }
-            if (sharePoint(t, u, tol)) continue;
+            if (sharePoint(t, u, tol)) {
+              // Two patches on one another (not along a join): they coincide, a crossing of area.
+              if (t.patch != u.patch && sameTriangle(t, u, tol)) record(t, u);
+              continue;
+            }
             if (t.patch != u.patch && tangentialContact(t, u, grid)) continue;
             if (trianglesCross(t, u, 1e-9)) record(t, u);
           }

@@ -23,6 +23,14 @@ struct Crossing {
 // check's grid bounds the drawing, not this test: at 1181² a 3-patch scene took 1.2 GB and 7 s;
 // a crossing that 256² misses is narrower than a 256th of the patch).
 constexpr int kCrossingGrid = 256;
+// And over the scene: at most kCrossingTriangles triangles (≈ 32 MB; 22 patches get 77²), then
+// the grid made coarser (to kMinCrossingGrid) while the spatial hash's candidate pairs exceed
+// kCrossingPairs (≈ 1 s natively); past that, Error(TooLarge) naming two patches that lie on
+// one another. Patches that coincide (a triangle of one on a triangle of another, away from
+// their joins) are reported as crossing.
+constexpr size_t kCrossingTriangles = size_t{1} << 18;
+constexpr size_t kCrossingPairs = size_t{1} << 27;
+constexpr int kMinCrossingGrid = 16;
 std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
 
 }  // namespace pdesurf

@@ -92,6 +92,56 @@ TEST_CASE("certificate: a plane cut through the blend is a crossing, reported wh
   CHECK(!r.ok);
 }
 
+TEST_CASE("crossings: a patch lying on another is a crossing; many on one another are bounded before the work") {
+  // Issue 38 re-attack: 64 coincident Bezier squares were "0 crossings: ok" after 7.9 s (their
+  // triangles share corners, which the test skips as touching), and grew with the pairs.
+  const auto squares = [](int count) {
+    nlohmann::json patches = nlohmann::json::array();
+    for (int k = 0; k < count; ++k) {
+      nlohmann::json net = nlohmann::json::array();
+      for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3; ++j) net.push_back({i / 3.0, j / 3.0, 0.0});
+      patches.push_back({{"name", "p" + std::to_string(k)}, {"kind", "bezier"}, {"energy", "membrane"}, {"degree", {3, 3}}, {"control_net", net}});
+    }
+    return nlohmann::json{{"format", "pdesurf-scene"}, {"version", 4}, {"patches", patches}};
+  };
+  {
+    const SceneReport r = check(squares(2));
+    REQUIRE(r.crossings.size() == 1);
+    CHECK(r.crossings[0].patch == "p0");
+    CHECK(r.crossings[0].other == "p1");
+    CHECK(r.crossings[0].triangles > 100);
+    CHECK(!r.ok);
+  }
+  // 64 on one another: the mesh is coarsened before any pair is compared, each pair still found.
+  const SceneReport many = check(squares(64));
+  CHECK(many.crossings.size() == 64 * 63 / 2);
+  // 63 tiny squares on one another under one large one: every triangle in one cell of the hash
+  // even at the coarsest mesh - refused, naming two of them, before a pair is compared.
+  {
+    nlohmann::json j = squares(64);
+    for (auto& p : j["patches"])
+      for (auto& x : p["control_net"]) x = {x[0].get<double>() * 1e-3, x[1].get<double>() * 1e-3, 0.0};
+    for (auto& x : j["patches"][63]["control_net"]) x = {x[0].get<double>() * 1e7, x[1].get<double>() * 1e7, 5.0};
+    const Scene scene = parseScene(j.dump());
+    const auto solved = solveScene(scene);
+    std::string error;
+    try {
+      checkScene(scene, solved, 64);
+    } catch (const Error& e) {
+      error = std::string(errorCodeName(e.code())) + ": " + e.what();
+    }
+    CHECK(error.rfind("TooLarge: the crossing test would compare ", 0) == 0);
+    CHECK(error.find("on a 16x16 mesh per patch") != std::string::npos);
+    CHECK(error.find("patches lie on one another ('p0' and 'p1')") != std::string::npos);
+  }
+  // One square alone, and the aeroplane at the largest grid (its mesh capped by the scene's
+  // triangles): nothing crosses.
+  CHECK(check(squares(1)).crossings.empty());
+  const Scene plane = parseScene(readText(examplePath("you2004-fig8d.json")));
+  CHECK(findCrossings(solveScene(plane), 10.0, 1181).empty());
+}
+
 TEST_CASE("certificate: a join to the wrong edge or a missing border is a named error") {
   auto j = fig2a();
   j["patches"][1]["meets"]["at"] = "t1";  // the plane's outer circle is not the blend's border
