@@ -1,3 +1,4 @@
+#include <Eigen/Eigenvalues>
 #include <memory>
 #include <string>
 
@@ -166,6 +167,21 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
   }
 }
 
+// The points lie on a line or at one point (to rounding): a Bézier surface stays in its net's
+// convex hull, so it has no area.
+bool spansNoArea(const std::vector<Eigen::Vector3d>& net) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double reach = 0.0;  // the coordinates' size: rounding's scale
+  for (const Eigen::Vector3d& p : net) mean += p, reach = std::max(reach, p.norm());
+  mean /= double(std::max<size_t>(1, net.size()));
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& p : net) spread += (p - mean) * (p - mean).transpose();
+  const Eigen::Vector3d e = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread, Eigen::EigenvaluesOnly).eigenvalues();  // ascending
+  // At a point (the spread within rounding of the coordinates), or on a line (the second
+  // spread direction within 1e-12 of the first, in length).
+  return !(std::sqrt(e(2)) > 1e-12 * reach) || !(e(1) > 1e-24 * e(2));
+}
+
 }  // namespace
 
 SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cache) {
@@ -178,6 +194,8 @@ SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cac
       if (!cache) own = std::make_unique<BezierSolver>(patch.bezier);
       const BezierSolver& solver = cache ? cache->bezier.get(patch.bezier) : *own;
       SolvedPatch out{&patch, {}, Method{}, solver.solve(patch.bezier.initial), 0.0, 0.0};
+      if (spansNoArea(out.controlNet))
+        throw Error(ErrorCode::InvalidField, "its solved control net lies on a line or at a point: the surface has no area (give a net or borders that span one)");
       out.surface = bezierToSeparable(patch.bezier.n, patch.bezier.m, out.controlNet);
       out.energy = solver.energy(out.controlNet, patch.bezier.initial);
       out.normalMisfit = solver.normalMisfit(out.controlNet);

@@ -102,6 +102,13 @@ def bezier_heavy_fields(d):
     second = copy.deepcopy(p); second['name'] = p['name'] + '2'
     d['patches'].append(second)
 
+def bezier_net_at(points):
+    def f(d):
+        p = bezier_patch(d)
+        p['lambda'] = 0
+        p['control_net'] = [points(k) for k in range(len(p['control_net']))]
+    return f
+
 # Cases measured by the CAD export: `export -o x.step` in the CLI, exportCad in the module.
 cad = [
     ('cad-heavy-fill', heavy_tube_fill(3), 16, 'TooLarge', 'the CAD fit of the scene would need more than 1e+10 units of work',
@@ -167,6 +174,10 @@ cases = [
      'issue 38 #11: both ends of one patch continuing u1 of the shoulder (three sheets on one edge) were accepted'),
     ('bezier-field-sampling', with_(bez, bezier_heavy_fields), 16, 'TooLarge', "patches[1].normals.field.z: sampling",
      "issue 38 re-attack: normal fields typed as 1 KB expressions on 256x256 grids were sampled point by point without a budget (64 patches: 34 s, also from a 5 KB link)"),
+    ('bezier-net-at-a-point', with_(bez, bezier_net_at(lambda k: [1, 1, 1])), 16, 'InvalidField', 'the surface has no area',
+     'issue 38 re-attack: a net of 25 equal points was written to STEP as a closed solid of volume 5e-34; check failed on a "crossing" of rounding'),
+    ('bezier-net-on-a-line', with_(bez, bezier_net_at(lambda k: [0.1 * k, 0, 0])), 16, 'InvalidField', 'the surface has no area',
+     'issue 38 re-attack: a net on the x-axis was certified ("area 0 ... ok") and exported as a face with zero normals'),
     ('three-sheets-blend-on-bezier-border', with_(strips, strips_blend_on_fill_border), 16, 'InvalidField',
      "patches[9].ends.u0: edge t0 of 'west' is already met by patches[0].borders.u0 ('fill')",
      'issue 38 re-attack: a blend and a Bezier fill on one strip border (two surfaces in one hole, three sheets on an edge) were both certified'),
