@@ -7,6 +7,7 @@
 #include "bezier/bezier_assembly.hpp"
 #include "bezier/interior_basis.hpp"
 #include "common/errors.hpp"
+#include "common/text.hpp"
 
 namespace pdesurf {
 
@@ -58,6 +59,11 @@ void validateBezierProblem(const BezierProblem& p) {
   for (size_t k = 0; k < f.vectors.size(); ++k) {
     requireFinite(f.vectors[k], "normal " + std::to_string(k));
     if (f.vectors[k].norm() < 1e-12) throw Error(ErrorCode::InvalidField, "normal " + std::to_string(k) + " has zero length");
+    // A continuous field is the Bézier vector function as given (its length weighs λ, as in
+    // Eqs. 1-2); past a float's range squared it is no weight at all.
+    if (!f.discrete && !std::isfinite(p.lambda * f.vectors[k].squaredNorm()))
+      throw Error(ErrorCode::NonFinite, "normal " + std::to_string(k) + " is " + numberText(f.vectors[k].stableNorm()) +
+                                            " long: lambda times its length squared is not finite (a continuous field's length weighs lambda)");
   }
   for (const auto* w : {&f.lambdaWeight, &f.gammaWeight}) {
     if (!w->empty() && w->size() != count) throw Error(ErrorCode::InvalidField, "per-sample weights need " + std::to_string(count) + " values");
