@@ -194,6 +194,12 @@ JoinResult certifyOne(const Patch& primary, const Meets& m, const SolvedPatch& p
   if (r.g0 > 1e-3)
     throw Error(ErrorCode::InvalidField, (m.curve ? "the " : "edge ") + r.edge + " of '" + r.surface + "' is not the border " + r.end + " of '" + r.patch +
                                              "': they are " + numberText(r.g0 * r.size) + " apart at v = " + numberText(r.worstV));
+  // A Bézier border by reference is a fit of the edge: its distance between the samples too,
+  // proven (or found, or not provable) when the border was derived.
+  if (!std::isnan(m.borderGap) && m.borderGap / size > r.g0) {
+    r.g0 = m.borderGap / size;
+    if (r.g0 > kG0Tolerance) r.worstV = m.borderGapV;
+  }
   r.ok = keepsPromise(r, measured);
   return r;
 }

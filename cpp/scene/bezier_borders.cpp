@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/curve_gap_bound.hpp"
 #include "bezier/bernstein.hpp"
 #include "bezier/bezier_solver.hpp"
 #include "common/errors.hpp"
@@ -42,7 +43,9 @@ struct Border {
   Patch* surface = nullptr;
   size_t surfaceIndex = 0;
   EdgeNet net;
+  std::array<Expr, 3> edge;  // S on the border, in v
   std::vector<Vec3> P, T;
+  CurveGap gap;              // ring 0 against the edge (analysis/curve_gap_bound.hpp)
 };
 
 const std::vector<double>& samples() {
@@ -84,6 +87,7 @@ void derive(Border& b, ExprBudget& budget) {
   asEnd.given = true, asEnd.surface = ref.surface, asEnd.atT1 = ref.atT1, asEnd.path = ref.path;
   asEnd.power = constant(1.0);
   checkTrimline(asEnd, S, x, S.v0, S.v1);
+  b.edge = x.P;
   const double d = ref.atT1 ? 1.0 : -1.0;
   for (double s : samples()) {
     const double v = ref.reverse ? S.v1 + s * (S.v0 - S.v1) : S.v0 + s * (S.v1 - S.v0);
@@ -190,15 +194,21 @@ void ringOne(const Border& b, const std::vector<Vec3>& net, std::vector<Vec3>& s
 void recordJoin(const Border& b, const Patch& patch) {
   const BorderReference& ref = *b.ref;
   Meets m;
+  const PrimarySurface& S = b.surface->primary;
+  m.borderGap = b.gap.verdict == CurveGap::Undecided ? INFINITY : b.gap.verdict == CurveGap::Found ? b.gap.gap : 0.0;
+  m.borderGapV = ref.reverse ? S.v1 + b.gap.s * (S.v0 - S.v1) : S.v0 + b.gap.s * (S.v1 - S.v0);
   m.patch = patch.name;
   m.end = b.net.e & 1;
   m.alongU = b.net.e >= 2;
   m.atT1 = ref.atT1;
   m.reversed = ref.reverse;
   m.by = ref.path;
-  for (const Meets& have : b.surface->meets) {
+  for (Meets& have : b.surface->meets) {
     if (have.patch != m.patch || have.end != m.end || have.alongU != m.alongU) continue;
-    if (have.atT1 == m.atT1 && have.reversed == m.reversed && std::isnan(have.v0)) return;  // the scene's own meets says the same
+    if (have.atT1 == m.atT1 && have.reversed == m.reversed && std::isnan(have.v0)) {  // the scene's own meets says the same
+      have.borderGap = m.borderGap, have.borderGapV = m.borderGapV;
+      return;
+    }
     fail(ErrorCode::InvalidField, "patches[" + std::to_string(b.surfaceIndex) + "].meets",
          "disagrees with " + ref.path + " (which makes edge " + (ref.atT1 ? "t1" : "t0") + " meet " + kBezierEdge[b.net.e] + " over the whole v_range" +
              (ref.reverse ? ", reversed" : "") + ")");
@@ -236,10 +246,13 @@ void deriveOne(Scene& scene, size_t index, ExprBudget& budget) {
   std::vector<Vec3>& net = p.initial;
   if (built) net.assign(static_cast<size_t>(p.n + 1) * (p.m + 1), Vec3::Zero());
   closeCorners(edge, net, size);
-  for (const Border& b : all) {  // ring 0, corners pinned
+  for (Border& b : all) {  // ring 0, corners pinned; its distance from the edge proven or found
     const int N = b.net.along();
     const std::vector<Vec3> c = fitPinned(N, b.P, net[b.net.at(0, 0)], net[b.net.at(N, 0)]);
     for (int k = 1; k < N; ++k) net[b.net.at(k, 0)] = c[k];
+    const PrimarySurface& S = b.surface->primary;
+    budget.setPath(b.ref->path);
+    b.gap = boundCurveGap(b.edge, b.ref->reverse ? S.v1 : S.v0, b.ref->reverse ? S.v0 : S.v1, c, kCornerTolerance * size);
   }
   std::vector<Vec3> sum(net.size(), Vec3::Zero());
   std::vector<int> count(net.size(), 0);

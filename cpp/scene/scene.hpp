@@ -108,6 +108,11 @@ struct Meets {
   // A fill's side: its part maps onto [v0, v1] through σ(w) = w - kFillEase sin(2πw)/2π, not
   // linearly (scene/fill_conditions.cpp).
   bool eased = false;
+  // Version 4, a Bézier border by reference (a fit of the edge): 0 when its distance from the
+  // edge is proven within the G0 tolerance everywhere, the distance found beyond it, or +inf
+  // when neither could be shown (analysis/curve_gap_bound.hpp); at borderGapV (the surface's
+  // v). NaN: not such a border. The certificate's G0 takes it with its samples.
+  double borderGap = NAN, borderGapV = NAN;
 };
 
 // The part of a fill's v (its loop u = 0) that border k of n runs over. With n > 1 the loop
