@@ -86,7 +86,7 @@ int runCheck(const Options& o, std::ostream& out) {
   // The surfaces as the page and export draw them, first: what cannot be drawn (beyond a
   // float, not finite) is the same NonFinite here (issue 38 #12: check measured joins of it).
   Mesh drawn;
-  for (const SolvedPatch& sp : solved) tessellateInto(sp.surface, grid, grid, drawn);
+  for (const SolvedPatch& sp : solved) drawn = tessellatePatch(sp, grid, grid);
   drawn = Mesh{};
   const SceneReport r = checkScene(scene, solved, grid);
   const std::vector<PatchResidual> res = residuals(solved);

@@ -19,8 +19,10 @@ namespace pdesurf::cli {
 int runSample(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
   checkGrid(o.nu, o.nv);
-  const Patch* patch = o.patch.empty() ? scene.firstSolved() : scene.find(o.patch);
-  if (!patch) throw std::runtime_error(o.patch.empty() ? "the scene has no PDE or Bezier patch" : "no patch named '" + o.patch + "'");
+  // Without --patch: the first solved patch, or with --control-net the first Bézier one.
+  const Patch* patch = !o.patch.empty() ? scene.find(o.patch) : o.controlNet ? scene.firstBezier() : scene.firstSolved();
+  if (!patch)
+    throw std::runtime_error(!o.patch.empty() ? "no patch named '" + o.patch + "'" : o.controlNet ? "--control-net: the scene has no Bezier patch" : "the scene has no PDE or Bezier patch");
   Method method;
   if (!o.method.empty()) method = parseMethod(o.method);
   const SolvedPatch solved = solvePatchIn(scene, *patch, o.method.empty() ? nullptr : &method);
@@ -75,12 +77,7 @@ namespace {
 ModelMesh loosePatches(const std::vector<SolvedPatch>& solved, int nu, int nv) {
   ModelMesh out;
   for (const SolvedPatch& sp : solved) {
-    Mesh m;
-    try {
-      m = tessellate(sp.surface, nu, nv);
-    } catch (const Error& e) {
-      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
-    }
+    const Mesh m = tessellatePatch(sp, nu, nv);
     ModelMesh::Part part;
     part.name = sp.patch->name;
     const uint32_t base = uint32_t(out.vertexCount());

@@ -160,10 +160,10 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
       const MeshSource now{sp.solveId, nu, nv, curvature};
       if (!(from == now)) {
         try {
-          tessellateInto(sp.surface, nu, nv, m, curvature);
-        } catch (const Error& e) {
+          tessellatePatchInto(sp, nu, nv, m, curvature);
+        } catch (const Error&) {
           from = MeshSource{};
-          throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
+          throw;
         }
       }
       from = now;

@@ -144,7 +144,7 @@ class MeshBuilder {
   void meshFace(int f, std::vector<uint32_t>* out) {
     const TopologyFace& s = faces_[size_t(f)];
     const bool flip = topo_.faces[size_t(f)].flipped;
-    const Mesh grid = tessellate(solved_[size_t(f)].surface, nu_, nv_);
+    const Mesh grid = tessellatePatch(solved_[size_t(f)], nu_, nv_);
     const int W = nu_ + 1;
     std::vector<uint32_t> id(size_t(W) * (nv_ + 1), 0);
     const int jFirst = s.closedV ? 0 : 1, jLast = s.closedV ? nv_ - 1 : nv_ - 1;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "common/text.hpp"
 
 namespace pdesurf::scene_json {
 
@@ -49,8 +50,13 @@ Placement parsePlacement(const json& j, const std::string& path, const Resolver&
     } else {
       scale.setConstant(r.number(j["scale"], sp));
     }
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
       if (scale[k] == 0.0) fail(ErrorCode::InvalidField, sp, "a scale of 0 flattens the surface");
+      // Past 10^±12 the drawn (float) surface and the joins' products of its derivatives leave
+      // the range numbers hold (a scale of 1e-150 drew every patch at 0).
+      if (!(std::abs(scale[k]) >= kPlacementScaleMin && std::abs(scale[k]) <= 1 / kPlacementScaleMin))
+        fail(ErrorCode::InvalidField, sp, "a scale of " + numberText(scale[k]) + " is outside 1e-12 .. 1e12 (in size)");
+    }
   }
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   if (j.contains("rotate")) {

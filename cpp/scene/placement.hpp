@@ -30,6 +30,8 @@ std::array<Expr, 3> applyPlacement(const Placement& p, const std::array<Expr, 3>
 // blend derived from it silently loses its shape (issue 38: a plane at x = 1e16 put the
 // sphere fillet's ring 1.4 off, certified).
 constexpr double kPlacementReach = 1e6;
+// The smallest scale's magnitude (and 1 / it the largest) a placement may apply.
+constexpr double kPlacementScaleMin = 1e-12;
 // Refuses (InvalidField at `path`.translate) a translation beyond kPlacementReach times the
 // placed surface's size, sampled at 9 × 9 points of t in [t0, t1], v in [v0, v1].
 void checkPlacementReach(const Placement& p, const std::array<Expr, 3>& xyz, double t0, double t1, double v0, double v1,

@@ -14,6 +14,7 @@
 #include "methods/method.hpp"
 #include "ode/basis_cache.hpp"
 #include "pde/pde_problem.hpp"
+#include "surface/mesh.hpp"
 #include "surface/separable_surface.hpp"
 
 namespace pdesurf {
@@ -222,6 +223,7 @@ struct Scene {
   const Patch* find(const std::string& name) const;
   const Patch* firstPde() const;
   const Patch* firstSolved() const;  // the first pde patch, else the first bezier patch
+  const Patch* firstBezier() const;
 };
 
 struct SolvedPatch {
@@ -262,6 +264,11 @@ struct SolveCache {
   std::map<std::string, SolveMemo> solved;
   uint64_t solves = 0;  // ids for SolveMemo::id
 };
+
+// A solved patch drawn on an nu×nv grid (surface/mesh.hpp), its errors (NonFinite beyond a
+// float, GridSize) naming the patch, the same wherever it is drawn (page, export, check).
+void tessellatePatchInto(const SolvedPatch& patch, int nu, int nv, Mesh& out, bool curvature = false);
+Mesh tessellatePatch(const SolvedPatch& patch, int nu, int nv, bool curvature = false);
 
 // Throws, message prefixed with the patch name. `method` overrides the patch's own. A patch
 // that depends on others (Patch::dependsOn) needs them: solveScene, or solvePatchIn.

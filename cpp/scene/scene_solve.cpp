@@ -24,6 +24,10 @@ const Patch* Scene::find(const std::string& name) const {
 
 const Patch* Scene::firstSolved() const {
   if (const Patch* p = firstPde()) return p;
+  return firstBezier();
+}
+
+const Patch* Scene::firstBezier() const {
   for (const Patch& p : patches)
     if (p.kind == PatchKind::Bezier) return &p;
   return nullptr;
@@ -170,16 +174,19 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
 // The points lie on a line or at one point (to rounding): a Bézier surface stays in its net's
 // convex hull, so it has no area.
 bool spansNoArea(const std::vector<Eigen::Vector3d>& net) {
+  double reach = 0.0;  // the coordinates' size: rounding's scale (points scaled by it: no overflow)
+  for (const Eigen::Vector3d& p : net) reach = std::max(reach, p.lpNorm<Eigen::Infinity>());
+  if (!std::isfinite(reach)) return false;  // not finite: named where it is drawn
+  if (reach == 0.0) return true;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  double reach = 0.0;  // the coordinates' size: rounding's scale
-  for (const Eigen::Vector3d& p : net) mean += p, reach = std::max(reach, p.norm());
-  mean /= double(std::max<size_t>(1, net.size()));
+  for (const Eigen::Vector3d& p : net) mean += p / reach;
+  mean /= double(net.size());
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& p : net) spread += (p - mean) * (p - mean).transpose();
+  for (const Eigen::Vector3d& p : net) spread += (p / reach - mean) * (p / reach - mean).transpose();
   const Eigen::Vector3d e = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread, Eigen::EigenvaluesOnly).eigenvalues();  // ascending
   // At a point (the spread within rounding of the coordinates), or on a line (the second
   // spread direction within 1e-12 of the first, in length).
-  return !(std::sqrt(e(2)) > 1e-12 * reach) || !(e(1) > 1e-24 * e(2));
+  return !(std::sqrt(e(2)) > 1e-12) || !(e(1) > 1e-24 * e(2));
 }
 
 }  // namespace
@@ -263,6 +270,24 @@ SolvedPatch solvePatchIn(const Scene& scene, const Patch& patch, const Method* m
   std::vector<std::unique_ptr<SolvedPatch>> byIndex(scene.patches.size());
   solveInOrder(scene, order, byIndex, nullptr, &patch, method);
   return std::move(*byIndex[target]);
+}
+
+void tessellatePatchInto(const SolvedPatch& patch, int nu, int nv, Mesh& out, bool curvature) {
+  try {
+    tessellateInto(patch.surface, nu, nv, out, curvature);
+  } catch (const Error& e) {
+    // The drawing names a point (t, v), a surface's parameters; a pde or Bézier patch's are (u, v).
+    std::string what = e.what();
+    if (patch.patch->kind != PatchKind::Primary)
+      for (size_t at; (at = what.find("(t, v)")) != std::string::npos;) what.replace(at, 6, "(u, v)");
+    throw Error(e.code(), "patch '" + patch.patch->name + "': " + what);
+  }
+}
+
+Mesh tessellatePatch(const SolvedPatch& patch, int nu, int nv, bool curvature) {
+  Mesh m;
+  tessellatePatchInto(patch, nu, nv, m, curvature);
+  return m;
 }
 
 }  // namespace pdesurf

@@ -177,7 +177,7 @@ double checkTrimline(const EndReference& ref, const PrimarySurface& S, const Tri
   const auto sineAt = [&](const Eigen::Vector3d& T, const Eigen::Vector3d& along) {
     // A trimline that stops (a pole) or has no finite tangent there has no direction to be parallel to.
     if (!along.allFinite() || !(along.norm() > 1e-9 * maxT) || !(T.norm() > 0)) return double(INFINITY);
-    return T.cross(along).norm() / (T.norm() * along.norm());
+    return T.normalized().cross(along.normalized()).norm();  // unit first: tiny surfaces do not underflow
   };
   for (int k = 0; k < kSamples; ++k) {
     const double v = vs[k] = bv0 + (bv1 - bv0) * k / (kSamples - 1);

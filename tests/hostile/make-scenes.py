@@ -109,6 +109,14 @@ def bezier_net_at(points):
         p['control_net'] = [points(k) for k in range(len(p['control_net']))]
     return f
 
+def plate_chain(v_range):
+    import math
+    net = [[j * 0.25, i * 0.25, 0.3 * math.sin(i * 0.7) * math.cos(j * 0.9)] for i in range(5) for j in range(5)]
+    plate = {'name': 'plate', 'kind': 'bezier', 'energy': 'thin-plate', 'degree': [4, 4], 'control_net': net, 'lambda': 0, 'gamma': 0}
+    ext = {'name': 'ext', 'kind': 'pde', 'v_range': v_range, 'ends': {'u0': {'patch': 'plate', 'at': 'u1', 'continuity': 'tangency'}},
+           'boundary': {'x': {'u1': ['v', 0]}, 'y': {'u1': [2, 1]}, 'z': {'u1': [0.2, 0]}}}
+    return {'format': 'pdesurf-scene', 'version': 4, 'patches': [ext, plate]}
+
 # Cases measured by the CAD export: `export -o x.step` in the CLI, exportCad in the module.
 cad = [
     ('cad-heavy-fill', heavy_tube_fill(3), 16, 'TooLarge', 'the CAD fit of the scene would need more than 1e+10 units of work',
@@ -181,6 +189,11 @@ cases = [
     ('bezier-normals-1e200', with_(bez, lambda d: bezier_patch(d)['normals'].__setitem__('vectors', [[float(x) * 1e200 for x in v] for v in bezier_patch(d)['normals']['vectors']])),
      16, 'NonFinite', 'lambda times its length squared is not finite',
      'issue 38 re-attack: continuous normals 1e200 long were reported as a singular energy ("reduce lambda or gamma, or the degree")'),
+    ('placement-scale-1e-150', with_(strips, lambda d: [p.__setitem__('placement', {'scale': 1e-150}) for p in d['patches'] if p['kind'] == 'surface']),
+     16, 'InvalidField', 'placement.scale: a scale of 1e-150 is outside 1e-12 .. 1e12',
+     'issue 38 re-attack: every strip scaled by 1e-150 was blamed as "dS/dt is parallel to the trimline" (an underflow), and drew at 0'),
+    ('chain-on-bezier-v-range-1e308', plate_chain([-1e308, 1e308]), 16, 'NonFinite', "patch 'ext': component x",
+     'issue 38 re-attack: a chain on a Bezier border over v in +-1e308: export named no patch (the module did)'),
     ('three-sheets-blend-on-bezier-border', with_(strips, strips_blend_on_fill_border), 16, 'InvalidField',
      "patches[9].ends.u0: edge t0 of 'west' is already met by patches[0].borders.u0 ('fill')",
      'issue 38 re-attack: a blend and a Bezier fill on one strip border (two surfaces in one hole, three sheets on an edge) were both certified'),
