@@ -49,8 +49,8 @@ const cases = [
     'a power tower: a^b differentiates through exp(b log a) at every level'],
   ['tau-near-limit', one('tau(v) of 960 characters into a 100-factor product', `1 + ${product(100)}`, curve(tau)), 'ok',
     'every t of S, S_t and S_tt replaced by a tau near the expression limit'],
-  ['many-blends', scene('20 blends at t1 of one 300-factor surface, curvature',
-    [...times((_, k) => blend(`blend${k}`, 't1', 'curvature'), 20), plane, bump(`1 + ${product(300)}`)]), 'ok',
+  ['many-blends', scene('20 blends at t1 of one 300-factor surface, curvature, each over a twentieth of v',
+    [...times((_, k) => ({ ...blend(`blend${k}`, 't1', 'curvature'), v_range: [`${k}*pi/10`, `${k + 1}*pi/10`] }), 20), plane, bump(`1 + ${product(300)}`)]), 'ok',
     'each blend on the same surface adds its derivation to the scene\'s budget'],
   ['31-surfaces-on-curves', scene('31 surfaces of 450 factors, each met along a curve with curvature', times((_, k) => [
     { ...blend(`blend${k}`, curve(), 'curvature'), ends: { u0: { surface: 'plane', at: 't0', continuity: 'tangency' }, u1: { surface: `bump${k}`, at: curve(), continuity: 'curvature' } } },

@@ -95,21 +95,22 @@ describe('duplicate', () => {
     assert.equal(check(scene).status, 0);
   });
 
-  it('with { share: true } the copy follows the original\'s sliders; a blend copy keeps its ends', () => {
+  it('with { share: true } the copy follows the original\'s sliders; a blend copy on its borders is refused', () => {
     const scene = fillet();
     const params = Object.keys(scene.parameters).length;
     assert.equal(duplicatePatch(scene, 'annulus1', { share: true }), 'annulus2');
     assert.equal(Object.keys(scene.parameters).length, params);
     assert.deepEqual(scene.patches[1], { ...scene.patches[0], name: 'annulus2' });
-    assert.equal(duplicatePatch(scene, 'blend1'), 'blend2');
-    assert.deepEqual(scene.patches.find((p) => p.name === 'blend2').ends, scene.patches.find((p) => p.name === 'blend1').ends);
+    // A blend's copy would meet the borders the blend meets: three sheets on each, refused.
+    refuses(scene, () => duplicatePatch(scene, 'blend1'), /^blend2\.u0\.at: t0 of "annulus1" is already met by blend1\.u0: three sheets would meet along it/);
     assert.equal(check(scene).status, 0);
   });
 
   it('refuses a blend whose copy would trim a surface along a second curve', () => {
     const scene = fillet();
     scene.patches[2].ends.u1.at = { t: 'cylinder1_z0 + 0.1*sin(v)', replaces: 't0' };
-    refuses(scene, () => duplicatePatch(scene, 'blend1'), /already trimmed along a curve by blend1\.u1/);
+    // Its copy meets annulus1's t0 (three sheets) and would trim cylinder1 along a second curve.
+    refuses(scene, () => duplicatePatch(scene, 'blend1'), /already met by blend1\.u0|already trimmed along a curve by blend1\.u1/);
     refuses(scene, () => duplicatePatch(scene, 'nope'), /no patch named "nope"/);
   });
 });
@@ -282,7 +283,8 @@ describe('blends', () => {
     assert.deepEqual(scene.patches[3].ends.u1, { surface: 'annulus1', at: 't1', continuity: 'tangency', power: 'annulus1_h + 1', flip: true });
     // 6.283185307179586 is 2*pi: the same numbers, no parameter that could move them apart.
     scene.patches[0].v_range = [0, 2 * Math.PI];
-    addBlend(scene, { surface: 'annulus1', at: 't1' }, { surface: 'cylinder1', at: 't1' }, { name: 'third' });
+    refuses(scene, () => addBlend(scene, { surface: 'annulus1', at: 't1' }, { surface: 'cylinder1', at: 't1' }, { name: 'third' }),
+      /^third\.u0\.at: t1 of "annulus1" is already met by blend2\.u1: three sheets would meet along it/);
     const { report, stderr } = check(scene);
     assert.ok(report, `the core accepts it: ${stderr}`); // blend2's flip folds it back (that is what flip is for), so no "ok" here
   });

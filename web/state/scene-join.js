@@ -92,7 +92,7 @@ export function existingEnds(scene) {
   return out;
 }
 
-/** The core's rules between ends (one curve per surface; a replaced border is met by nobody else). */
+/** The core's rules between ends (one curve per surface; a replaced border is met by nobody else; a border by one end). */
 export function checkEndRules(ends) {
   for (let i = 0; i < ends.length; i++) {
     for (let k = 0; k < i; k++) {
@@ -100,6 +100,8 @@ export function checkEndRules(ends) {
       if (a.surface !== b.surface) continue;
       if (a.curve && b.curve) throw new Error(`${a.where}.at: ${JSON.stringify(a.surface)} is already trimmed along a curve by ${b.where}; a surface can be trimmed along one curve only`);
       if ((a.curve || b.curve) && a.border === b.border) throw new Error(`${a.where}.at: ${a.border} of ${JSON.stringify(a.surface)} is replaced by a curve at ${(a.curve ? a : b).where}, and ${(a.curve ? b : a).where} meets it`);
+      // Two ends on one border: three sheets would meet along it (the core refuses it too).
+      if (!a.curve && !b.curve && a.border === b.border) throw new Error(`${a.where}.at: ${a.border} of ${JSON.stringify(a.surface)} is already met by ${b.where}: three sheets would meet along it`);
     }
   }
 }
