@@ -224,7 +224,22 @@ test('Bezier patches: sample, export and --control-net', () => {
   assert.equal(surface.length, 25);
   const pde = run('sample', example('you2004-fig2a'), '--control-net');
   assert.equal(pde.status, 1);
-  assert.match(pde.stderr, /not a Bezier patch/);
+  assert.match(pde.stderr, /--control-net: the scene has no Bezier patch/);
+  const named = run('sample', example('you2004-fig2a'), '--control-net', '--patch', 'blend');
+  assert.equal(named.status, 1);
+  assert.match(named.stderr, /patch 'blend' is not a Bezier patch/);
+  // Without --patch, the first Bézier patch, not the first solved one (a chain before its plate).
+  const net5 = [];
+  for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) net5.push([j / 4, i / 4, 0.1 * Math.sin(i) * Math.cos(j)]);
+  const chained = { format: 'pdesurf-scene', version: 4, patches: [
+    { name: 'ext', kind: 'pde', v_range: [0, 1], ends: { u0: { patch: 'plate', at: 'u1' } }, boundary: { x: { u1: ['v', 0] }, y: { u1: [2, 1] }, z: { u1: [0.2, 0] } } },
+    { name: 'plate', kind: 'bezier', energy: 'thin-plate', degree: [4, 4], control_net: net5 }] };
+  const file = join(mkdtempSync(join(tmpdir(), 'pdesurf-cli-')), 'chain-first.json');
+  writeFileSync(file, JSON.stringify(chained));
+  const last = run('sample', file, '--control-net');
+  assert.equal(last.status, 0, last.stderr);
+  assert.equal(last.stdout.trim().split('\n').length - 1, 25, 'the plate\'s 5×5 control points');
+
 });
 
 test('check: one line per join, exit 0 when every promise holds, 1 with the failing join named', () => {
