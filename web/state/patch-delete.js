@@ -3,6 +3,7 @@
 import { isObject, patchesOf, requirePatch } from './patch-names.js';
 import { detach } from './ends-edit.js';
 import { AXES } from './operator-edit.js';
+import { referencesOf } from './patch-references.js';
 
 const EDGES = ['v0', 'u1', 'v1', 'u0'];
 
@@ -17,22 +18,11 @@ export function dependentsOf(scene, name) {
   const out = [];
   for (const p of patchesOf(scene)) {
     if (!isObject(p) || p.name === name) continue;
-    if (p.kind === 'pde' && isObject(p.ends)) {
-      const ends = ['u0', 'u1'].filter((e) => isObject(p.ends[e]) && p.ends[e].surface === name);
-      if (ends.length) out.push({ patch: p.name, kind: 'blend', ends });
-    }
-    if (p.kind === 'bezier' && isObject(p.borders)) {
-      const edges = EDGES.filter((e) => isObject(p.borders[e]) && p.borders[e].surface === name);
-      if (edges.length) out.push({ patch: p.name, kind: 'fill', edges });
-    }
-    // Version 4: ends that continue the patch (chains) and fills whose loop runs over it.
-    if (p.kind === 'pde' && isObject(p.ends)) {
-      const ends = ['u0', 'u1'].filter((e) => isObject(p.ends[e]) && p.ends[e].patch === name);
-      if (ends.length) out.push({ patch: p.name, kind: 'chain', ends });
-    }
-    if (p.kind === 'fill' && Array.isArray(p.borders)) {
-      const edges = p.borders.filter((b) => isObject(b) && b.patch === name).map((b) => (isObject(b.at) ? `curve replacing ${b.at.replaces ?? 't0'}` : String(b.at)));
-      if (edges.length) out.push({ patch: p.name, kind: 'loop', edges });
+    const refs = referencesOf(p).filter((r) => r.role !== 'meets' && r.holder[r.key] === name);
+    for (const [role, field] of [['blend', 'ends'], ['fill', 'edges'], ['chain', 'ends'], ['loop', 'edges']]) {
+      let where = refs.filter((r) => r.role === role).map((r) => r.where);
+      if (role === 'fill') where = EDGES.filter((e) => where.includes(e));
+      if (where.length) out.push({ patch: p.name, kind: role, [field]: where });
     }
   }
   return out;

@@ -8,6 +8,7 @@
 import { isObject, patchesOf, requirePatch, checkNewPatchName, findPatch, parameterPrefix, uniqueParameterName } from './patch-names.js';
 import { namesIn, replaceNames } from './expr-text.js';
 import { existingEnds, checkEndRules } from './scene-join.js';
+import { referencesOf } from './patch-references.js';
 
 export { dependentsOf, deletePatch } from './patch-delete.js';
 export { setPlacement, placePoint } from './placement.js';
@@ -75,14 +76,8 @@ export function renamePatch(scene, oldName, newName) {
   if (newName === oldName) return;
   checkNewPatchName(scene, newName);
   patch.name = newName;
-  for (const p of patchesOf(scene)) {
-    if (!isObject(p)) continue;
-    for (const group of [p.ends, p.borders]) {
-      if (!isObject(group)) continue;
-      for (const e of Object.values(group)) if (isObject(e) && e.surface === oldName) e.surface = newName;
-    }
-    if (isObject(p.meets) && p.meets.patch === oldName) p.meets.patch = newName;
-  }
+  // Every reference to it: blend ends, chained ends, Bézier borders, fill borders, meets.
+  for (const p of patchesOf(scene)) for (const r of referencesOf(p)) if (r.holder[r.key] === oldName) r.holder[r.key] = newName;
 }
 
 /** `${base}${k}` for the first free k, base being `name` without trailing digits (cut to fit 64 bytes). */

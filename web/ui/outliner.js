@@ -4,18 +4,12 @@
 // as text (a name with markup shows its characters). It reports what the user asked;
 // web/build-wiring.js makes the edits through the document's door.
 
+import { conditionSources } from '../state/patch-references.js';
+
 const KIND_LABELS = { pde: 'blend', fill: 'fill', bezier: 'Bézier', surface: 'surface', ruled: 'ruled', separable: 'separable' };
 
 /** The patches `patch`'s conditions come from: surfaces its ends or borders name, patches its chained ends continue, a fill's loop. */
-export function upstreamOf(patch) {
-  const out = [];
-  const add = (n) => { if (typeof n === 'string' && n && !out.includes(n)) out.push(n); };
-  const obj = (x) => x !== null && typeof x === 'object';
-  if (obj(patch?.ends)) for (const e of ['u0', 'u1']) if (obj(patch.ends[e])) add(patch.ends[e].surface ?? patch.ends[e].patch);
-  if (Array.isArray(patch?.borders)) for (const b of patch.borders) add(obj(b) ? b.patch : null);
-  else if (obj(patch?.borders)) for (const b of Object.values(patch.borders)) add(obj(b) ? b.surface : null);
-  return out;
-}
+export const upstreamOf = conditionSources;
 
 function button(label, title, onClick, action) {
   const b = document.createElement('button');
