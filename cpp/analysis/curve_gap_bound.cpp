@@ -29,7 +29,7 @@ struct Piece {
 
 }  // namespace
 
-CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const std::vector<Eigen::Vector3d>& B, double tol, int maxPieces) {
+CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const std::vector<Eigen::Vector3d>& B, double tol, int maxPieces, size_t* work) {
   const double k = v1 - v0;  // dv/ds
   std::array<std::array<Expr, 3>, 4> d;  // d[r][c]: the r-th derivative of f_c in v
   d[0] = f;
@@ -51,14 +51,18 @@ CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const
     return coefs.empty() ? 0.0 : bernsteinSum(coefs.data(), static_cast<int>(coefs.size()) - 1, s);
   };
   const double k2 = k * k, k3 = k2 * k;
+  // One piece: the values program at its middle, three enclosures, the Bernstein restrictions.
+  const size_t perPiece = values.instructions() + third[0].steps() + third[1].steps() + third[2].steps() + 3 * B.size() * B.size();
   CurveGap out;
   std::vector<Piece> level = {{0.0, 1.0}}, next;
   while (!level.empty()) {
-    if (out.pieces + static_cast<int>(level.size()) > maxPieces) {
+    const size_t cost = perPiece * level.size();
+    if (out.pieces + static_cast<int>(level.size()) > maxPieces || (work && cost > *work)) {
       out.verdict = CurveGap::Undecided, out.gap = INFINITY, out.s = level.front().a;
       return out;
     }
     out.pieces += static_cast<int>(level.size());
+    if (work) *work -= cost;
     const size_t m = level.size();
     std::vector<double> vs(m);
     for (size_t i = 0; i < m; ++i) vs[i] = v0 + k * 0.5 * (level[i].a + level[i].b);

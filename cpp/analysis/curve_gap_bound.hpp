@@ -27,11 +27,15 @@ struct CurveGap {
 };
 
 constexpr int kCurveGapPieces = 1 << 14;
+// Operations (interval steps and program instructions) a scene's borders may spend in all.
+constexpr size_t kCurveGapWork = size_t{1} << 25;
 
 // f: x, y, z as expressions in v (ExprVar::V); v(s) = v0 + s (v1 - v0), s in [0, 1] (v1 < v0:
 // backwards); B: the control points of a Bézier curve in s. tol: an absolute distance.
 // The derivatives of f are built symbolically (under the caller's ExprBudget, if any).
+// work: the operations left to spend (each level of pieces is charged before it is done;
+// undecided when it would overdraw), null: no limit but maxPieces.
 CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const std::vector<Eigen::Vector3d>& B, double tol,
-                       int maxPieces = kCurveGapPieces);
+                       int maxPieces = kCurveGapPieces, size_t* work = nullptr);
 
 }  // namespace pdesurf

@@ -216,7 +216,7 @@ void recordJoin(const Border& b, const Patch& patch) {
   b.surface->meets.push_back(m);
 }
 
-void deriveOne(Scene& scene, size_t index, ExprBudget& budget) {
+void deriveOne(Scene& scene, size_t index, ExprBudget& budget, size_t& proofWork) {
   Patch& patch = scene.patches[index];
   BezierProblem& p = patch.bezier;
   const std::string path = "patches[" + std::to_string(index) + "].borders";
@@ -252,7 +252,7 @@ void deriveOne(Scene& scene, size_t index, ExprBudget& budget) {
     for (int k = 1; k < N; ++k) net[b.net.at(k, 0)] = c[k];
     const PrimarySurface& S = b.surface->primary;
     budget.setPath(b.ref->path);
-    b.gap = boundCurveGap(b.edge, b.ref->reverse ? S.v1 : S.v0, b.ref->reverse ? S.v0 : S.v1, c, kCornerTolerance * size);
+    b.gap = boundCurveGap(b.edge, b.ref->reverse ? S.v1 : S.v0, b.ref->reverse ? S.v0 : S.v1, c, kCornerTolerance * size, kCurveGapPieces, &proofWork);
   }
   std::vector<Vec3> sum(net.size(), Vec3::Zero());
   std::vector<int> count(net.size(), 0);
@@ -285,12 +285,13 @@ void deriveOne(Scene& scene, size_t index, ExprBudget& budget) {
 }  // namespace
 
 void deriveBorders(Scene& scene, ExprBudget& budget) {
+  size_t proofWork = kCurveGapWork;  // the borders' proofs, over the scene (analysis/curve_gap_bound.hpp)
   for (size_t i = 0; i < scene.patches.size(); ++i) {
     const Patch& patch = scene.patches[i];
     if (patch.kind != PatchKind::Bezier) continue;
     bool any = false;
     for (const BorderReference& ref : patch.borders) any = any || ref.given;
-    if (any) deriveOne(scene, i, budget);
+    if (any) deriveOne(scene, i, budget, proofWork);
   }
 }
 

@@ -96,6 +96,12 @@ TEST_CASE("curve gap: a polynomial border is proven, a narrow spike between samp
   MESSAGE("exp at degree 12: proven in " << e.pieces << " pieces");
   REQUIRE(e.pieces > 1);
   CHECK(boundCurveGap(grow, -1.0, 1.0, twelve, 1e-9, e.pieces - 1).verdict == CurveGap::Undecided);
+  // The same from a scene's work left: charged level by level, undecided before it overdraws.
+  size_t plenty = kCurveGapWork, little = 1000;
+  CHECK(boundCurveGap(grow, -1.0, 1.0, twelve, 1e-9, kCurveGapPieces, &plenty).verdict == CurveGap::Within);
+  CHECK(plenty < kCurveGapWork);
+  CHECK(boundCurveGap(grow, -1.0, 1.0, twelve, 1e-9, kCurveGapPieces, &little).verdict == CurveGap::Undecided);
+  CHECK(little <= 1000);
 }
 
 TEST_CASE("curve gap: random smooth curves with random narrow bumps are never proven within the tolerance when they are not") {
