@@ -13,8 +13,10 @@ import { previewMesh, pivotOf } from './viewer/placement-gizmo.js';
 import { dragPlacement, placementValues } from './state/placement.js';
 import { messageOf } from './state/document.js';
 import { bodyText } from './state/join-report.js';
+import { kindInfo, isSurfaceKind } from './state/patch-kinds.js';
 
-const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && p.kind === 'surface');
+// The patches a placement can move.
+const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && kindInfo(p.kind).placeable);
 
 /** { doc, panel, viewer, hooks, openBuilt(scene, title) } */
 export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
@@ -117,7 +119,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     // control points are derived from them): while one is being made, only theirs.
     const kindOf = (name) => (state.scene?.patches || []).find((p) => p && p.name === name)?.kind;
     viewer.borders.enable({
-      filter: (patch) => !(pickMode === 'fill' && folder.fillOptions().kind === 'bezier') || !['pde', 'bezier'].includes(kindOf(patch)),
+      filter: (patch) => !(pickMode === 'fill' && folder.fillOptions().kind === 'bezier') || isSurfaceKind(kindOf(patch)),
       onPick: (pick) => {
         const border = { surface: pick.patch, at: pick.border };
         const chosen = folder.picked(pickMode, border);

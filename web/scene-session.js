@@ -10,6 +10,7 @@
 // Opening and links stay explicit (share, files, history): they decide what a solve means.
 import { withGridTopology } from './viewer/grid-topology.js';
 import { DEFAULT_GRID } from './state/scene-state.js';
+import { kindInfo } from './state/patch-kinds.js';
 import { loadExampleScene } from './state/examples.js';
 import { readHash, writeExampleIdToHash, markHashShown, hashIsShown } from './state/hash.js';
 import { decodeFragment } from './link/link-codec.js';
@@ -280,7 +281,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     // The page path of this solve (request to drawn) against the worker's own time.
     hooks.lastSolve = { pageMs: performance.now() - job.requestedAt, workerMs: ms, ...job.grid, solvedAhead: Boolean(result.solvedAhead),
       // Which pde patches the module solved again (the others' problems did not change).
-      resolved: result.patches.filter((p) => p.reused === false && (p.kind === 'pde' || p.kind === 'fill')).map((p) => p.name) };
+      resolved: result.patches.filter((p) => p.reused === false && kindInfo(p.kind).pde).map((p) => p.name) };
     hooks.ready = true;
     const { nu, nv } = job.grid;
     const n = result.patches.length;

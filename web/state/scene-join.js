@@ -8,6 +8,7 @@
 import { isObject, patchesOf, findPatch, checkNewPatchName, uniquePatchName } from './patch-names.js';
 import { checkExpression, numberField, namesIn } from './expr-text.js';
 import { CONTINUITIES, ISO_LINES } from './ends-edit.js';
+import { kindInfo, isSurfaceKind } from './patch-kinds.js';
 
 const DEFAULT_V_RANGE = [0, '2*pi'];
 const EDGES = ['v0', 'u1', 'v1', 'u0'];
@@ -27,16 +28,10 @@ function surfaceOf(scene, name, path) {
 
 const vRangeOf = (p) => (Array.isArray(p.v_range) ? p.v_range : DEFAULT_V_RANGE);
 
-const PRIMARY_BORDERS = ['t0', 't1'];
-const PDE_ENDS = ['u0', 'u1'];
-const isPrimary = (p) => p.kind !== 'pde' && p.kind !== 'bezier' && p.kind !== 'fill';
 
 /** The borders a patch offers to blends and fills: a surface's t0/t1, a pde patch's ends, a Bézier patch's four edges; a fill none. */
 export function bordersOfPatch(p) {
-  if (!isObject(p) || p.kind === 'fill') return [];
-  if (p.kind === 'pde') return PDE_ENDS;
-  if (p.kind === 'bezier') return ['u0', 'u1', 'v0', 'v1'];
-  return PRIMARY_BORDERS;
+  return isObject(p) ? kindInfo(p.kind).borders : [];
 }
 
 /** The patch a pick names and its border, checked: throws naming `path`. */
@@ -201,7 +196,7 @@ function checkPicks(scene, borders, endpoints, anyKind = false) {
     if (anyKind) borderOf(scene, b, `borders[${k}]`);
     else {
       const p = findPatch(scene, b.surface);
-      if (p && !isPrimary(p)) throw new Error(`borders[${k}].surface: ${JSON.stringify(p.name)} is a ${p.kind} patch; a Bézier fill's borders lie on "surface" patches (a PDE fill takes any border)`);
+      if (p && !isSurfaceKind(p.kind)) throw new Error(`borders[${k}].surface: ${JSON.stringify(p.name)} is a ${p.kind} patch; a Bézier fill's borders lie on "surface" patches (a PDE fill takes any border)`);
       surfaceOf(scene, b.surface, `borders[${k}]`);
       if (!ISO_LINES.includes(b.at)) throw new Error(`borders[${k}].at: must be "t0" or "t1", not ${JSON.stringify(b.at)}`);
     }

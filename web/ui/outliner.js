@@ -5,8 +5,7 @@
 // web/build-wiring.js makes the edits through the document's door.
 
 import { conditionSources } from '../state/patch-references.js';
-
-const KIND_LABELS = { pde: 'blend', fill: 'fill', bezier: 'Bézier', surface: 'surface', ruled: 'ruled', separable: 'separable' };
+import { kindInfo } from '../state/patch-kinds.js';
 
 /** The patches `patch`'s conditions come from: surfaces its ends or borders name, patches its chained ends continue, a fill's loop. */
 export const upstreamOf = conditionSources;
@@ -46,7 +45,7 @@ export function buildOutliner(gui, handlers) {
     li.classList.toggle('selected', patch.name === selected);
     const kind = document.createElement('span');
     kind.className = 'outliner-kind';
-    kind.textContent = KIND_LABELS[patch.kind] ?? String(patch.kind);
+    kind.textContent = kindInfo(patch.kind).label;
     const name = document.createElement('input');
     name.type = 'text';
     name.value = patch.name;

@@ -12,6 +12,7 @@ import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
 import { LineMaterial } from 'three/addons/lines/LineMaterial.js';
 import { boundaryLine } from './join-highlight.js';
+import { kindInfo, isSurfaceKind } from '../state/patch-kinds.js';
 
 export const HOVER_COLOR = 0x3fd8ff;
 export const CHOSEN_COLOR = 0xa4ff5c;
@@ -20,24 +21,15 @@ export const TOUCH_RADIUS = 24;
 export const CLICK_SLOP = 5; // a press that travels farther is an orbit, not a pick
 const HOVER_WIDTH = 4;
 const CHOSEN_WIDTH = 3;
-export const BORDERS = ['t0', 't1'];
 
-/** Every kind but pde, bezier and fill is a primary surface. */
-export const isSurfaceKind = (kind) => kind !== 'pde' && kind !== 'bezier' && kind !== 'fill';
 
 // A border's name -> its grid line (boundaryLine's side).
 const GRID_SIDE = { t0: 'u0', t1: 'u1', u0: 'u0', u1: 'u1', v0: 'v0', v1: 'v1' };
-function namesOf(kind) {
-  if (kind === 'fill') return [];
-  if (kind === 'pde') return ['u0', 'u1'];
-  if (kind === 'bezier') return ['u0', 'u1', 'v0', 'v1'];
-  return BORDERS;
-}
 
 /** The borders of one solved patch: [{ patch, border, points (flat xyz, along its grid line) }]. */
 export function bordersOf(patch) {
   if (!patch.uvs || patch.positions.length < 6) return [];
-  return namesOf(patch.kind).map((border) => ({ patch: patch.name, border, points: boundaryLine(patch, GRID_SIDE[border]) }));
+  return kindInfo(patch.kind).borders.map((border) => ({ patch: patch.name, border, points: boundaryLine(patch, GRID_SIDE[border]) }));
 }
 
 /** Distance from (px, py) to the segment a-b and where along it (0..1) the nearest point is. */

@@ -1,5 +1,6 @@
 // Turning one solved patch (typed arrays from the solver) into a three.js mesh.
 import * as THREE from 'three';
+import { kindInfo } from '../state/patch-kinds.js';
 
 // Solved patches (kind "pde" blends and "bezier" variational surfaces) in one colour,
 // the primary surfaces they join in another.
@@ -82,7 +83,7 @@ function setCurvature(mesh, patch) {
 
 /** A mesh for one patch; userData keeps the name and kind for lookups and tests. */
 export function meshFromPatch(patch) {
-  const solved = patch.kind === 'pde' || patch.kind === 'fill' || patch.kind === 'bezier';
+  const solved = kindInfo(patch.kind).solved;
   const mesh = new THREE.Mesh(geometryFromPatch(patch), solved ? materials.blend : materials.primary);
   mesh.name = patch.name;
   mesh.frustumCulled = false; // the view frames the patches; culling would compute bounds per solve
