@@ -14,12 +14,29 @@
 //              next solve fails, the scene goes back to what it was and the error is
 //              reported as this edit's refusal
 // }
-// Signals: 'changed' (edit, result), 'refused' (error, edit), 'selection' (name | null),
-// 'judging' (edit) when a checked edit awaits the solver, 'judged' (kept) with its verdict,
-// 'reverted' (edit) after a checked edit the solver refused.
+// Signals: SIGNALS below, declared once; emitting or subscribing to another name throws.
 
 /** A refusal's text: a solver error carries its code (InvalidField, …), an edit's own is an Error. */
 export const messageOf = (err) => (err && err.code ? `${err.code}: ${err.message}` : err && err.message ? err.message : String(err));
+
+/** Every signal the page emits, with what it carries. */
+export const SIGNALS = Object.freeze({
+  changed: '(edit, result): an edit went through the door',
+  refused: '(error, edit): an edit was refused (by itself, or by the solver for a checked edit)',
+  selection: '(name | null): the selected patch',
+  judging: '(edit): a checked edit awaits the solver',
+  judged: '(kept): its verdict',
+  reverted: '(edit): a checked edit the solver refused was put back',
+  opened: '(scene, { exampleId, title }): the scene session opened a scene',
+  restored: '(scene): undo or redo put a scene back',
+  solved: '(result, job): a solve came back (the meshes, before they are drawn)',
+  drawn: '(result, job): its meshes are drawn',
+  certified: '(report, job): the join report of the drawn scene arrived',
+});
+
+function known(signal) {
+  if (!Object.hasOwn(SIGNALS, signal)) throw new Error(`unknown signal ${JSON.stringify(signal)} (web/state/document.js declares them)`);
+}
 
 export function createDocument(state) {
   const subscribers = new Map();
@@ -27,6 +44,7 @@ export function createDocument(state) {
   let pendingCheck = null; // { edit, before } until the next solve says yes or no
 
   function emit(signal, ...args) {
+    known(signal);
     for (const fn of subscribers.get(signal) || []) fn(...args);
   }
 
@@ -40,11 +58,12 @@ export function createDocument(state) {
   const doc = {
     state,
 
-    /** Tell the subscribers of `signal` (the scene session's 'opened', 'solved', 'drawn', …). */
+    /** Tell the subscribers of `signal` (one of SIGNALS: the scene session's 'opened', 'solved', 'drawn', …). */
     emit,
 
     /** Subscribe to a signal; returns the unsubscribe function. */
     on(signal, fn) {
+      known(signal);
       if (!subscribers.has(signal)) subscribers.set(signal, new Set());
       subscribers.get(signal).add(fn);
       return () => subscribers.get(signal).delete(fn);
