@@ -43,12 +43,7 @@ int runSample(const Options& o, std::ostream& out) {
     b.flush();
     return 0;
   }
-  GridSamples g;
-  try {
-    g = sampleGrid(solved.surface, o.nu, o.nv);
-  } catch (const Error& e) {
-    throw Error(e.code(), "patch '" + patch->name + "': " + e.what());
-  }
+  const GridSamples g = inPatch(patch->name, [&] { return sampleGrid(solved.surface, o.nu, o.nv); });
   // Doubles in shortest round-trip form; u repeats down the columns and v along the rows, so
   // their text is made once.
   std::vector<NumberText> uText(g.nu + 1);

@@ -268,13 +268,7 @@ const char* levelName(int level) { return level <= 0 ? "G0" : level == 1 ? "G1" 
 
 double sceneSizeOf(const std::vector<SolvedPatch>& solved) {
   Box box;
-  for (const SolvedPatch& sp : solved) {
-    try {
-      box.add(sp.surface);
-    } catch (const Error& e) {
-      throw Error(e.code(), "patch '" + sp.patch->name + "': " + e.what());
-    }
-  }
+  for (const SolvedPatch& sp : solved) inPatch(sp.patch->name, [&] { box.add(sp.surface); });
   return box.diagonal();
 }
 

@@ -30,4 +30,17 @@ class Error : public std::runtime_error {
   ErrorCode code_;
 };
 
+// An error at a field of the scene: "patches[2].ends.u0: why".
+[[noreturn]] inline void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
+
+// f(), with an Error it throws named by the patch it concerns: "patch 'blend': why".
+template <class F>
+auto inPatch(const std::string& name, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    throw Error(e.code(), "patch '" + name + "': " + e.what());
+  }
+}
+
 }  // namespace pdesurf

@@ -21,7 +21,6 @@ constexpr double kRhoFloor = 1e-3;          // a corner length below this share 
 
 using Vec3 = Eigen::Vector3d;
 
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
 // One edge e (kBezierEdge order: u0, u1, v0, v1) of an n×m net.
 struct EdgeNet {

@@ -19,7 +19,6 @@ constexpr int kSamples = 129;  // along the trimline, for the checks and the pow
 
 using Vec3Expr = std::array<Expr, 3>;
 
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
 Eigen::Vector3d eval3(const Vec3Expr& e, double v) {
   const double vars[2] = {v, 0.0};

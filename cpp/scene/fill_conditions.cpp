@@ -35,7 +35,6 @@ namespace {
 
 constexpr double kCloseTolerance = 1e-10;  // of the loop's size: a gap beyond this is refused
 
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
 // 1 on [v0, v1], ½ at a corner; from = -inf: everything below v1 too, to = inf: above v0.
 Expr indicator(double v0, double v1) {

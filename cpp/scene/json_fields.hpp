@@ -27,9 +27,7 @@ constexpr int kMaxTerms = 256;
 constexpr int kMaxPower = 24;
 inline const char* const kAxis[3] = {"x", "y", "z"};
 
-[[noreturn]] inline void fail(ErrorCode code, const std::string& path, const std::string& why) {
-  throw Error(code, path + ": " + why);
-}
+using ::pdesurf::fail;
 
 inline void allowOnly(const json& obj, const std::string& path, std::initializer_list<const char*> keys) {
   if (!obj.is_object()) fail(ErrorCode::InvalidField, path, "expected an object");

@@ -11,8 +11,6 @@ namespace pdesurf {
 
 namespace {
 
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
-
 std::string number(double x) {
   std::ostringstream o;
   o << x;

@@ -229,13 +229,7 @@ void solveInOrder(const Scene& scene, const std::vector<size_t>& wanted, std::ve
   for (size_t i : wanted) {
     const Patch& p = scene.patches[i];
     std::shared_ptr<const PdeProblem> problem;
-    if (!p.dependsOn.empty()) {
-      try {
-        problem = derivedProblem(p, lookup, &derivedNodes);
-      } catch (const Error& e) {
-        throw Error(e.code(), "patch '" + p.name + "': " + e.what());
-      }
-    }
+    if (!p.dependsOn.empty()) problem = inPatch(p.name, [&] { return derivedProblem(p, lookup, &derivedNodes); });
     out[i] = std::make_unique<SolvedPatch>(solveWith(p, problem, &p == overridden ? method : nullptr, cache));
   }
 }

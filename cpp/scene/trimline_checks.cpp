@@ -23,7 +23,6 @@ constexpr int kEncloseDepth = 56;      // halvings of a sample interval whose en
 
 using Vec3Expr = std::array<Expr, 3>;
 
-[[noreturn]] void fail(ErrorCode code, const std::string& path, const std::string& why) { throw Error(code, path + ": " + why); }
 
 double eval1(const Expr& e, double v) {
   const double vars[2] = {v, 0.0};
