@@ -10,6 +10,7 @@ export function subscribeToEdits(doc, { panel, status, scheduler }) {
   let typingTimer = 0;
   doc.on('changed', (edit) => {
     if (edit.structure) panel.restoreScene(doc.state.scene); // folders rebuilt by the next solve
+    else panel.showParameterValues();
     if (edit.ends) panel.rebuildEnds();
     const solve = edit.solve || 'now';
     clearTimeout(typingTimer);

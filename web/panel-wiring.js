@@ -12,7 +12,7 @@ export function createPanelWiring({ doc, share, bezier }) {
     onGridChange: () => apply('change the grid'),
     onShare: () => share().copy(),
     parameterHandlers: {
-      onChange: () => apply('change a parameter'),
+      onChange: (name, value) => apply('change a parameter', (s) => s.setParameter(name, value)),
       onAdd: (name, value) => apply('add the parameter', (s) => s.addParameter(name, value), { structure: true }),
       // Allowed even while an expression uses it: the solver's error then says where.
       onRemove: (name) => apply('remove the parameter', (s) => s.removeParameter(name), { structure: true }),

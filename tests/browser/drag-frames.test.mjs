@@ -88,6 +88,9 @@ describe('frames while a drag re-solves', { skip }, () => {
     const s = await scene(page);
     assert.equal(s.patches.find((p) => p.name === 'wingL').placement.translate[0], 'wing_x');
     assert.ok(s.parameters.wing_x.value > before.wing_x + 0.01, `wing_x ${before.wing_x} -> ${s.parameters.wing_x.value}`);
+    // Its slider shows where the drag left it (the sliders show the scene after every edit).
+    const shown = Number(await page.locator('#panel [data-param="wing_x"] input').first().inputValue());
+    assert.ok(Math.abs(shown - s.parameters.wing_x.value) <= 1e-3 * Math.max(1, Math.abs(s.parameters.wing_x.value)), `slider ${shown}, scene ${s.parameters.wing_x.value}`);
     await shoot(page, 'aeroplane-wing-drag-1280.png');
     await settle(page);
   });

@@ -40,6 +40,15 @@ export function addParameter(scene, name, value) {
 }
 
 /** Remove a parameter; the scene keeps an empty "parameters" object if it was the last. */
+/** A slider's move: the parameter's value (finite; the slider keeps it in its range). */
+export function setParameterValue(scene, name, value) {
+  if (!isObject(scene.parameters) || !Object.hasOwn(scene.parameters, name) || !isObject(scene.parameters[name])) {
+    throw new Error(`there is no parameter "${name}"`);
+  }
+  if (!Number.isFinite(value)) throw new Error(`the value of "${name}" must be a finite number`);
+  scene.parameters[name].value = value;
+}
+
 export function removeParameter(scene, name) {
   if (!isObject(scene.parameters) || !Object.hasOwn(scene.parameters, name)) {
     throw new Error(`there is no parameter "${name}"`);

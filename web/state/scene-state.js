@@ -3,7 +3,7 @@
 import { withParam, withOrder, orderOf, defaultParams, defaultOperator, isPerCoordinate, AXES } from './operator-edit.js';
 import { createBoundaryStash } from './boundary-stash.js';
 import { hasExpressions, setBoundarySlot, setForce, setSurfaceCoordinate, setSurfaceRangeEnd } from './expression-edit.js';
-import { addParameter, removeParameter } from './parameter-edit.js';
+import { addParameter, removeParameter, setParameterValue } from './parameter-edit.js';
 import { setRegionWeights } from './region-weights.js';
 import { setControlPointCoordinate } from './control-net-edit.js';
 import { setEndField, attach, attachDefaults, detach, neededOrder } from './ends-edit.js';
@@ -186,6 +186,10 @@ export function createSceneState() {
 
     addParameter(name, value) {
       return addParameter(state.scene, name, value);
+    },
+
+    setParameter(name, value) {
+      setParameterValue(state.scene, name, value);
     },
 
     removeParameter(name) {

@@ -17,7 +17,7 @@ const GRID_MAX = 256;
 
 /**
  * grid: {nu, nv} (edited in place); onGridChange(); onShare();
- * parameterHandlers: { onChange, onAdd(name, value) -> bool, onRemove(name) };
+ * parameterHandlers: { onChange(name, value), onAdd(name, value) -> bool, onRemove(name) };
  * operatorHandlers: see buildOperatorFolders; bezierHandlers: see buildBezierFolders;
  * endHandlers: see buildEndFolders; onExpression(patch, field, text).
  */
@@ -115,6 +115,11 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       reopen = rememberFolders(gui);
       buildParameters();
       reopen(gui);
+    },
+
+    /** After any edit: the sliders show the scene's values (a drag may move a parameter). */
+    showParameterValues() {
+      paramFolder?.showValues?.();
     },
 
     /** Parameters were added or removed: rebuild their folder in place. */

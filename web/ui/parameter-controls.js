@@ -1,6 +1,7 @@
-// The "Parameters" folder: one slider per scene parameter, bound straight to
-// scene.parameters[name].value so the scene object stays the single source of truth,
-// a remove button beside each, and a row to add one (name + value).
+// The "Parameters" folder: one slider per scene parameter, bound to a draft of its value: a
+// move reports (name, value) and the edit through the document's door writes the scene (the
+// scene is never written before the door has its snapshot); showValues() shows the scene's
+// values again after any edit. A remove button beside each, and a row to add one.
 // DOM hooks: data-param="<name>" on a slider, data-param-remove="<name>" on its
 // button, data-param-new="name" / "value" and data-param-add on the add row.
 import { escapeHtml } from './html-text.js';
@@ -17,13 +18,15 @@ function removeButton(name, onRemove) {
 }
 
 /**
- * Build the folder. handlers: onChange() after a slider move; onAdd(name, value) (the
- * caller rebuilds the folder when it added one); onRemove(name).
+ * Build the folder. handlers: onChange(name, value) after a slider move; onAdd(name, value)
+ * (the caller rebuilds the folder when it added one); onRemove(name). The folder's
+ * showValues() sets every slider to the scene's value.
  */
 export function buildParameterFolder(gui, scene, { onChange, onAdd, onRemove }) {
   const folder = gui.addFolder('Parameters');
   folder.domElement.dataset.folder = 'parameters';
   const params = scene && scene.parameters && typeof scene.parameters === 'object' ? scene.parameters : {};
+  const shown = []; // [name, draft, controller]
   for (const [name, p] of Object.entries(params)) {
     if (!p || typeof p !== 'object') continue;
     const { min, max, value, step } = p;
@@ -31,14 +34,23 @@ export function buildParameterFolder(gui, scene, { onChange, onAdd, onRemove }) 
     if (![min, max, value].every(Number.isFinite) || !(max > min)) continue;
     // Without a step of the scene's own, lil-gui's implicit step (range / 1000) moves the
     // slider and a typed value is kept as typed (an explicit step would round it).
+    const draft = { value };
     const ctrl = folder
-      .add(p, 'value', min, max, Number.isFinite(step) && step > 0 ? step : undefined)
+      .add(draft, 'value', min, max, Number.isFinite(step) && step > 0 ? step : undefined)
       .name(escapeHtml(name))
-      .onChange(onChange);
+      .onChange((v) => onChange(name, v));
+    shown.push([name, draft, ctrl]);
     ctrl.domElement.dataset.param = name; // stable hook for tests and styling
     if (typeof p.label === 'string') ctrl.domElement.title = p.label; // attribute: never parsed
     ctrl.domElement.append(removeButton(name, onRemove));
   }
+
+  folder.showValues = () => {
+    for (const [name, draft, ctrl] of shown) {
+      const now = params[name]?.value;
+      if (Number.isFinite(now) && now !== draft.value) draft.value = now, ctrl.updateDisplay();
+    }
+  };
 
   const draft = { name: '', value: 1 };
   const nameCtrl = folder.add(draft, 'name').name(escapeHtml('new name'));
