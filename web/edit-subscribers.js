@@ -11,6 +11,7 @@ export function subscribeToEdits(doc, { panel, status, scheduler }) {
   doc.on('changed', (edit) => {
     if (edit.structure) panel.restoreScene(doc.state.scene); // folders rebuilt by the next solve
     else panel.showParameterValues();
+    panel.refreshGrid();
     if (edit.ends) panel.rebuildEnds();
     const solve = edit.solve || 'now';
     clearTimeout(typingTimer);

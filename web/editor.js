@@ -39,10 +39,7 @@ export async function startEditor({ examples, solver, relay, viewer, bezier, sta
   const gallery = createGallery(document.getElementById('gallery'), examples, (id) => session.openExample(id), layout);
   session = createSceneSession({ doc, solver, relay, viewer, panel, gallery, status, hooks, titleEl, examples, fail });
   // For scripts/bench-page.mjs: a grid past the panel's 256 (the page path at 1024²).
-  hooks.requestGrid = (nu, nv) => {
-    Object.assign(state.grid, { nu, nv });
-    session.scheduler.request();
-  };
+  hooks.requestGrid = (nu, nv) => doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu, nv }) });
   subscribeToEdits(doc, { panel, status, scheduler: session.scheduler });
   doc.on('opened', () => viewer.resetOverlays());
 

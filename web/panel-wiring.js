@@ -9,7 +9,7 @@ export function createPanelWiring({ doc, share, bezier }) {
 
   const panel = createPanel({
     grid: state.grid,
-    onGridChange: () => apply('change the grid'),
+    onGridChange: (grid) => apply('change the grid', (s) => s.setGrid(grid)),
     onShare: () => share().copy(),
     parameterHandlers: {
       onChange: (name, value) => apply('change a parameter', (s) => s.setParameter(name, value)),

@@ -39,3 +39,24 @@ test('every signal the page emits or subscribes to is declared, and every declar
   for (const s of used) assert.ok(Object.hasOwn(SIGNALS, s), `${s} is used but not declared`);
   for (const s of Object.keys(SIGNALS)) assert.ok(used.has(s), `${s} is declared but never used`);
 });
+
+test('the grid and the parameters change through the door only, refused by name when out of range', async () => {
+  const { createSceneState } = await import('../../web/state/scene-state.js');
+  const state = createSceneState();
+  state.scene = { format: 'pdesurf-scene', version: 4, parameters: { r: { value: 1, min: 0, max: 2 } }, patches: [] };
+  const doc = createDocument(state);
+  const changed = [];
+  doc.on('changed', (edit) => changed.push(edit.name));
+  assert.equal(doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu: 32, nv: 48 }) }).ok, true);
+  assert.deepEqual(state.grid, { nu: 32, nv: 48 });
+  const bad = doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu: 0, nv: 48 }) });
+  assert.equal(bad.ok, false);
+  assert.match(bad.error.message, /the grid's nu must be a whole number from 1 to 2048, not 0/);
+  assert.deepEqual(state.grid, { nu: 32, nv: 48 });
+  assert.equal(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('r', 1.5) }).ok, true);
+  assert.equal(state.scene.parameters.r.value, 1.5);
+  assert.match(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('q', 1) }).error.message, /there is no parameter "q"/);
+  assert.match(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('r', NaN) }).error.message, /must be a finite number/);
+  assert.equal(state.scene.parameters.r.value, 1.5);
+  assert.deepEqual(changed, ['change the grid', 'change a parameter']);
+});

@@ -188,6 +188,13 @@ export function createSceneState() {
       return addParameter(state.scene, name, value);
     },
 
+    /** The page's grid (cells per direction, 1 .. 2048 each: the core's bound). */
+    setGrid({ nu, nv }) {
+      for (const [key, n] of [['nu', nu], ['nv', nv]])
+        if (!Number.isInteger(n) || n < 1 || n > 2048) throw new Error(`the grid's ${key} must be a whole number from 1 to 2048, not ${n}`);
+      Object.assign(state.grid, { nu, nv });
+    },
+
     setParameter(name, value) {
       setParameterValue(state.scene, name, value);
     },

@@ -16,7 +16,7 @@ const GRID_MIN = 4;
 const GRID_MAX = 256;
 
 /**
- * grid: {nu, nv} (edited in place); onGridChange(); onShare();
+ * grid: {nu, nv} (shown, never written: onGridChange({ nu, nv }) asks for a change); onShare();
  * parameterHandlers: { onChange(name, value), onAdd(name, value) -> bool, onRemove(name) };
  * operatorHandlers: see buildOperatorFolders; bezierHandlers: see buildBezierFolders;
  * endHandlers: see buildEndFolders; onExpression(patch, field, text).
@@ -27,8 +27,10 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
 
   const share = buildShareFolder(gui, onShare);
   const gridFolder = gui.addFolder('Grid');
+  // A draft of the grid: a move reports the new grid and the edit writes it (refreshGrid shows the page's).
+  const gridDraft = { nu: grid.nu, nv: grid.nv };
   const gridCtrls = ['nu', 'nv'].map((key) => {
-    const c = gridFolder.add(grid, key, GRID_MIN, GRID_MAX, 1).onChange(onGridChange);
+    const c = gridFolder.add(gridDraft, key, GRID_MIN, GRID_MAX, 1).onChange(() => onGridChange({ nu: gridDraft.nu, nv: gridDraft.nv }));
     c.domElement.dataset.grid = key;
     return c;
   });
@@ -180,8 +182,9 @@ export function createPanel({ grid, onGridChange, onShare, parameterHandlers, op
       expressions?.setOrder(patchName, axis, order);
     },
 
-    /** The grid object was replaced in place (a link's grid): show its values. */
+    /** The page's grid changed (a link's grid, an opening, undo): show its values. */
     refreshGrid() {
+      Object.assign(gridDraft, { nu: grid.nu, nv: grid.nv });
       for (const c of gridCtrls) c.updateDisplay();
     },
 
