@@ -3,6 +3,7 @@
 // each other in step (a point picked in the view shows in the panel; a number typed in
 // the panel moves the marker). One patch's initial net is edited at a time.
 import { AXES, controlPointEntry } from './state/control-net-edit.js';
+import { edits } from './state/edits.js';
 
 /**
  * Created before the viewer and the panel (they take its handlers); connect() them
@@ -26,7 +27,7 @@ export function createBezierWiring() {
   }
 
   // Every edit goes through the document's door: it re-solves (the solver reports bad values).
-  const edit = (write) => ctx.doc.apply({ name: 'edit the control net', run: write }).ok;
+  const edit = (write) => ctx.doc.apply(edits.controlNet(write)).ok;
 
   // The first edit of a net the scene leaves out (a fill with four borders) writes the solved
   // initial net into the scene; the borders still fix their rings over it.

@@ -6,11 +6,13 @@
 import { buildBuildFolder } from './ui/build-controls.js';
 import { buildOutliner } from './ui/outliner.js';
 import { buildPlacementFolder } from './ui/placement-controls.js';
-import { addSurface, libraryEntry } from './state/surface-library.js';
-import { addBlend, addFill, addLoopFill, bordersOfPatch } from './state/scene-join.js';
-import { newScene, renamePatch, duplicatePatch, deletePatch, dependentsOf, unusedParameters, removeParameter, setPlacement } from './state/scene-build.js';
+import { libraryEntry } from './state/surface-library.js';
+import { bordersOfPatch } from './state/scene-join.js';
+import { newScene, dependentsOf, unusedParameters } from './state/scene-build.js';
 import { previewMesh, pivotOf } from './viewer/placement-gizmo.js';
-import { dragPlacement, placementValues } from './state/placement.js';
+import { placementValues } from './state/placement.js';
+import { edits } from './state/edits.js';
+import { buildEdits } from './state/build-edits.js';
 import { messageOf } from './state/document.js';
 import { bodyText } from './state/join-report.js';
 import { kindInfo, isSurfaceKind } from './state/patch-kinds.js';
@@ -35,10 +37,11 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     return placementValues(drawnScene, surfacesOf(drawnScene).find((p) => p.name === name)?.placement);
   };
 
-  // Building edits: one undo step each; the answer shows beside the choices.
-  function build(name, run, more = {}) {
-    const r = doc.apply({ name, run, structure: true, build: true, ...more });
-    if (r.ok) folder.say(typeof more.said === 'function' ? more.said(r.result) : '');
+  // Building edits (state/build-edits.js): one undo step each; the answer shows beside the
+  // choices (said: its text from the edit's result).
+  function build(edit, said) {
+    const r = doc.apply(edit);
+    if (r.ok) folder.say(typeof said === 'function' ? said(r.result) : '');
     return r;
   }
 
@@ -49,7 +52,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     },
     onAdd: (kind, options = {}) => {
       const name = kind === 'custom' ? 'custom surface' : libraryEntry(kind)?.label ?? kind;
-      const r = build(`add a ${name}`, (s) => addSurface(s.scene, kind, options), { said: (n) => `added ${n}` });
+      const r = build(buildEdits.addSurface(kind, options, name), (n) => `added ${n}`);
       if (r.ok) doc.select(r.result);
     },
     onBlend: (a, b, options) => makeBlend(a, b, options),
@@ -60,7 +63,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
   const outliner = buildOutliner(panel.gui, {
     onSelect: (name) => doc.select(name),
     onRename: (old, next) => {
-      const r = build('rename', (s) => renamePatch(s.scene, old, next));
+      const r = build(buildEdits.rename(old, next));
       if (r.ok && doc.selection() === old) doc.select(next);
       if (!r.ok) refresh(); // the name field shows the old name again
     },
@@ -70,22 +73,19 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
       viewer.setPatchVisible(name, on);
     },
     onDuplicate: (name) => {
-      const r = build('duplicate', (s) => duplicatePatch(s.scene, name), { said: (n) => `${name} duplicated as ${n}` });
+      const r = build(buildEdits.duplicate(name), (n) => `${name} duplicated as ${n}`);
       if (r.ok) doc.select(r.result);
     },
     onDelete: (name, dependents) => {
       if (doc.selection() === name) doc.select(null);
-      build('delete', (s) => deletePatch(s.scene, name, { dependents, solved: drawn }));
+      build(buildEdits.delete(name, dependents, drawn));
     },
-    onRemoveParameter: (name) => build('remove the parameter', (s) => removeParameter(s.scene, name)),
+    onRemoveParameter: (name) => build({ ...edits.removeParameter(name), build: true }),
   });
   panel.keepAfterShare(folder.folder.domElement, outliner.folder.domElement);
 
   function makeBlend(a, b, options) {
-    const r = build('blend', (s) => addBlend(s.scene, a, b, options), {
-      checked: true, // the solver judges what the page cannot (a border where ∂S/∂t vanishes)
-      said: (n) => `${n}: ${a.surface} ${a.at} to ${b.surface} ${b.at}`,
-    });
+    const r = build(buildEdits.blend(a, b, options), (n) => `${n}: ${a.surface} ${a.at} to ${b.surface} ${b.at}`);
     folder.clearChoices();
     viewer.borders.highlight([]);
     if (r.ok) doc.select(r.result);
@@ -98,10 +98,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     // Ends closer than 1e-3 of the borders' size meet (float32 vertices: a closed border's two
     // ends may differ in the last digit).
     const tolerance = 1e-3 * Math.max(0, ...drawnBorders.map((d) => d?.extent ?? 0));
-    const r = build('fill', (s) => {
-      if (endpoints.some((e) => !e)) throw new Error('a border that is not drawn yet cannot be filled: wait for the solve');
-      return options.kind === 'pde' ? addLoopFill(s.scene, borders, endpoints, { continuity: options.continuity, tolerance }) : addFill(s.scene, borders, endpoints, { tolerance });
-    }, { checked: true, said: (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}` });
+    const r = build(buildEdits.fill(borders, endpoints, options, tolerance), (n) => `${n} fills ${borders.map((b) => `${b.surface} ${b.at}`).join(', ')}`);
     folder.clearChoices();
     viewer.borders.highlight([]);
     if (r.ok) doc.select(r.result);
@@ -139,7 +136,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     const patch = surfacesOf(state.scene).find((p) => p.name === name);
     if (!patch) return;
     placement = buildPlacementFolder(panel.gui, name, patch.placement, {
-      onPlacement: (n, p) => build('place', (s) => setPlacement(s.scene, n, p), { structure: false }),
+      onPlacement: (n, p) => build(buildEdits.place(n, p)),
       onMode: (mode) => {
         gizmoMode = mode;
         attachGizmo(name);
@@ -160,7 +157,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
     if (!gizmoMode || !patch || !mesh) return;
     viewer.placement.setMode(gizmoMode);
     // The gizmo works in numbers; a placement naming parameters moves them (dragPlacement).
-    const place = (now) => doc.apply({ name: 'place', run: (s) => dragPlacement(s.scene, name, now), build: true });
+    const place = (now) => doc.apply(buildEdits.drag(name, now));
     viewer.placement.attach(name, placementValues(state.scene, patch.placement), pivotOf(mesh), {
       onDrag: (now) => {
         previewMesh(viewer.meshOf(name), drawnPlacement(name), now);
@@ -181,7 +178,7 @@ export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
 
   doc.on('changed', (edit) => {
     if (edit.structure) refresh();
-    if (edit.name === 'place' || edit.structure) placement?.update(surfacesOf(state.scene).find((p) => p.name === doc.selection())?.placement);
+    if (edit.type === 'place' || edit.structure) placement?.update(surfacesOf(state.scene).find((p) => p.name === doc.selection())?.placement);
   });
   doc.on('reverted', () => refresh());
   doc.on('refused', (err, edit) => {

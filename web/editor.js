@@ -13,6 +13,7 @@ import { createHelpOverlay } from './ui/help-overlay.js';
 import { watchNumberControls } from './ui/number-access.js';
 import { installShortcuts } from './keyboard-shortcuts.js';
 import { createSceneState } from './state/scene-state.js';
+import { edits } from './state/edits.js';
 import { createShareWiring } from './share-wiring.js';
 import { createAnalysisWiring } from './analysis-wiring.js';
 import { createFileWiring } from './file-wiring.js';
@@ -39,7 +40,7 @@ export async function startEditor({ examples, solver, relay, viewer, bezier, sta
   const gallery = createGallery(document.getElementById('gallery'), examples, (id) => session.openExample(id), layout);
   session = createSceneSession({ doc, solver, relay, viewer, panel, gallery, status, hooks, titleEl, examples, fail });
   // For scripts/bench-page.mjs: a grid past the panel's 256 (the page path at 1024²).
-  hooks.requestGrid = (nu, nv) => doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu, nv }) });
+  hooks.requestGrid = (nu, nv) => doc.apply(edits.setGrid({ nu, nv }));
   subscribeToEdits(doc, { panel, status, scheduler: session.scheduler });
   doc.on('opened', () => viewer.resetOverlays());
 

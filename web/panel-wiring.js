@@ -1,44 +1,40 @@
 // The control panel, its every handler an edit through the document's door
 // (web/state/document.js): the door re-solves, records the undo step and updates the link.
 import { createPanel } from './ui/panel.js';
+import { edits } from './state/edits.js';
 
 /** { doc, share, bezier } -> the panel (web/ui/panel.js). */
 export function createPanelWiring({ doc, share, bezier }) {
   const { state } = doc;
-  const apply = (name, run, more = {}) => doc.apply({ name, run, ...more }).ok;
+  const apply = (edit) => doc.apply(edit).ok;
 
   const panel = createPanel({
     grid: state.grid,
-    onGridChange: (grid) => apply('change the grid', (s) => s.setGrid(grid)),
+    onGridChange: (grid) => apply(edits.setGrid(grid)),
     onShare: () => share().copy(),
     parameterHandlers: {
-      onChange: (name, value) => apply('change a parameter', (s) => s.setParameter(name, value)),
-      onAdd: (name, value) => apply('add the parameter', (s) => s.addParameter(name, value), { structure: true }),
-      // Allowed even while an expression uses it: the solver's error then says where.
-      onRemove: (name) => apply('remove the parameter', (s) => s.removeParameter(name), { structure: true }),
+      onChange: (name, value) => apply(edits.setParameter(name, value)),
+      onAdd: (name, value) => apply(edits.addParameter(name, value)),
+      onRemove: (name) => apply(edits.removeParameter(name)),
     },
     operatorHandlers: {
       methodOf: (patch) => state.methodOf(patch),
-      onParam: (patch, axis, name, value) => apply('change the operator', (s) => s.setOperatorParam(patch, axis, name, value)),
+      onParam: (patch, axis, name, value) => apply(edits.setOperatorParam(patch, axis, name, value)),
       onOrder: (patch, axis, order) => {
-        let params = null;
-        apply('change the order', (s) => {
-          params = s.setOperatorOrder(patch, axis, order);
-        }, { solve: 'now' });
+        const r = doc.apply(edits.setOperatorOrder(patch, axis, order));
+        const params = r.ok ? r.result : null;
         if (params) panel.setOrder(patch, axis, order);
         return params;
       },
-      onMethod: (patch, method) => apply('change the method', (s) => s.setMethod(patch, method)),
+      onMethod: (patch, method) => apply(edits.setMethod(patch, method)),
     },
     bezierHandlers: bezier.panelHandlers,
     endHandlers: {
-      // A continuity may raise the orders.
-      onField: (patch, end, key, value, typed) =>
-        apply('change the end', (s) => s.setEndField(patch, end, key, value), { solve: typed ? 'typed' : 'now' }),
-      onAttach: (patch, end) => apply('attach the end', (s) => s.attachEnd(patch, end), { ends: true }),
-      onDetach: (patch, end, derived) => apply('detach the end', (s) => s.detachEnd(patch, end, derived), { ends: true }),
+      onField: (patch, end, key, value, typed) => apply(edits.setEndField(patch, end, key, value, typed)),
+      onAttach: (patch, end) => apply(edits.attachEnd(patch, end)),
+      onDetach: (patch, end, derived) => apply(edits.detachEnd(patch, end, derived)),
     },
-    onExpression: (patch, field, text) => apply('change the expression', (s) => s.setExpression(patch, field, text), { solve: 'typed' }),
+    onExpression: (patch, field, text) => apply(edits.setExpression(patch, field, text)),
   });
   return panel;
 }

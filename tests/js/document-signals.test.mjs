@@ -5,7 +5,9 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync, statSync } from 'node:fs';
 import { join } from 'node:path';
-import { createDocument, SIGNALS } from '../../web/state/document.js';
+import { createDocument, SIGNALS, EDIT_TYPES } from '../../web/state/document.js';
+import { edits } from '../../web/state/edits.js';
+import { buildEdits } from '../../web/state/build-edits.js';
 
 const web = new URL('../../web/', import.meta.url).pathname;
 const sources = (dir) => readdirSync(dir).flatMap((f) => {
@@ -17,15 +19,15 @@ test('a declared signal reaches its subscribers; an undeclared one throws on emi
   const doc = createDocument({ scene: { patches: [] } });
   const seen = [];
   const off = doc.on('changed', (edit) => seen.push(edit.name));
-  assert.equal(doc.apply({ name: 'nothing', run: () => 1 }).ok, true);
+  assert.equal(doc.apply(edits.controlNet(() => 1)).ok, true);
   off();
-  doc.apply({ name: 'again', run: () => 2 });
-  assert.deepEqual(seen, ['nothing']);
+  doc.apply(edits.controlNet(() => 2));
+  assert.deepEqual(seen, ['edit the control net']);
   assert.throws(() => doc.on('chnaged', () => {}), /unknown signal "chnaged"/);
   assert.throws(() => doc.emit('drawn-late'), /unknown signal "drawn-late"/);
   const refused = [];
   doc.on('refused', (err) => refused.push(err.message));
-  assert.equal(doc.apply({ name: 'bad', run: () => { throw new Error('no'); } }).ok, false);
+  assert.equal(doc.apply(edits.controlNet(() => { throw new Error('no'); })).ok, false);
   assert.deepEqual(refused, ['no']);
 });
 
@@ -47,16 +49,37 @@ test('the grid and the parameters change through the door only, refused by name 
   const doc = createDocument(state);
   const changed = [];
   doc.on('changed', (edit) => changed.push(edit.name));
-  assert.equal(doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu: 32, nv: 48 }) }).ok, true);
+  assert.equal(doc.apply(edits.setGrid({ nu: 32, nv: 48 })).ok, true);
   assert.deepEqual(state.grid, { nu: 32, nv: 48 });
-  const bad = doc.apply({ name: 'change the grid', run: (s) => s.setGrid({ nu: 0, nv: 48 }) });
+  const bad = doc.apply(edits.setGrid({ nu: 0, nv: 48 }));
   assert.equal(bad.ok, false);
   assert.match(bad.error.message, /the grid's nu must be a whole number from 1 to 2048, not 0/);
   assert.deepEqual(state.grid, { nu: 32, nv: 48 });
-  assert.equal(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('r', 1.5) }).ok, true);
+  assert.equal(doc.apply(edits.setParameter('r', 1.5)).ok, true);
   assert.equal(state.scene.parameters.r.value, 1.5);
-  assert.match(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('q', 1) }).error.message, /there is no parameter "q"/);
-  assert.match(doc.apply({ name: 'change a parameter', run: (s) => s.setParameter('r', NaN) }).error.message, /must be a finite number/);
+  assert.match(doc.apply(edits.setParameter('q', 1)).error.message, /there is no parameter "q"/);
+  assert.match(doc.apply(edits.setParameter('r', NaN)).error.message, /must be a finite number/);
   assert.equal(state.scene.parameters.r.value, 1.5);
   assert.deepEqual(changed, ['change the grid', 'change a parameter']);
+});
+
+test('every edit comes from the catalogue: each factory\'s type is declared, each declared type has a factory, others are refused', () => {
+  const made = new Set();
+  const args = Array(5).fill(() => {}); // nothing runs: the factories only make edits
+  for (const make of [...Object.values(edits), ...Object.values(buildEdits)]) {
+    const e = make(...args);
+    assert.ok(EDIT_TYPES.has(e.type), `${e.type} is not declared`);
+    assert.equal(typeof e.run, 'function');
+    assert.equal(typeof e.name, 'string');
+    made.add(e.type);
+  }
+  assert.deepEqual([...EDIT_TYPES].filter((t) => !made.has(t)), []);
+  const doc = createDocument({ scene: { patches: [] } });
+  assert.throws(() => doc.apply({ name: 'change a parameter', run: () => {} }), /an edit of unknown type undefined/);
+  assert.throws(() => doc.apply({ type: 'teleport', name: 'x', run: () => {} }), /unknown type "teleport"/);
+  // No wiring writes an edit by hand: every door call takes a factory's edit.
+  for (const file of sources(web)) {
+    const text = readFileSync(file, 'utf8');
+    assert.ok(!/\.apply\(\{/.test(text), `${file} hands the door an edit it made itself`);
+  }
 });

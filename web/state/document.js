@@ -4,7 +4,8 @@
 // the result; the solve scheduler, the undo history, the link, the panel and the outliner
 // subscribe (web/main.js composes them) instead of each handler calling them on its own.
 //
-// An edit: {
+// An edit (made by a factory of web/state/edits.js): {
+//   type:      what kind of edit it is (EDIT_TYPES; code branches on it)
 //   name:      what it does, for messages ("add a cylinder")
 //   run(state) -> result     changes the scene (web/state/scene-state.js); throws to refuse
 //   solve:     'now' (default) | 'typed' (after the keys pause) | 'none'
@@ -33,6 +34,10 @@ export const SIGNALS = Object.freeze({
   drawn: '(result, job): its meshes are drawn',
   certified: '(report, job): the join report of the drawn scene arrived',
 });
+
+/** Every type an edit may have (the factories of ./edits.js make them): the door refuses any other. */
+export const EDIT_TYPES = Object.freeze(new Set(['set-parameter', 'add-parameter', 'remove-parameter', 'set-grid', 'operator-param', 'operator-order', 'method',
+  'end-field', 'attach-end', 'detach-end', 'expression', 'control-net', 'add-surface', 'rename', 'duplicate', 'delete', 'blend', 'fill', 'place']));
 
 function known(signal) {
   if (!Object.hasOwn(SIGNALS, signal)) throw new Error(`unknown signal ${JSON.stringify(signal)} (web/state/document.js declares them)`);
@@ -71,6 +76,7 @@ export function createDocument(state) {
 
     /** Run an edit through the door: { ok, result } or { ok: false, error }. */
     apply(edit) {
+      if (!EDIT_TYPES.has(edit?.type)) throw new Error(`an edit of unknown type ${JSON.stringify(edit?.type)} (web/state/edits.js makes them)`);
       if (!state.scene) return { ok: false, error: new Error('no scene is open') };
       const before = JSON.stringify(state.scene);
       let result;
