@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "bezier/bernstein.hpp"
+#include "common/errors.hpp"
+#include "expr/budget.hpp"
 #include "expr/interval.hpp"
 #include "expr/program.hpp"
 
@@ -31,10 +33,43 @@ struct Piece {
 
 CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const std::vector<Eigen::Vector3d>& B, double tol, int maxPieces, size_t* work) {
   const double k = v1 - v0;  // dv/ds
+  CurveGap out;
+  // First the distance at kScanPoints evenly spaced points: a border the degree cannot follow
+  // (a curved one, a spike as wide as the scan's spacing) is found without derivatives.
+  {
+    const ExprProgram values(std::vector<Expr>{f[0], f[1], f[2]});
+    std::vector<double> s(kScanPoints), vs(kScanPoints), at(3 * kScanPoints);
+    for (int j = 0; j < kScanPoints; ++j) s[size_t(j)] = double(j) / (kScanPoints - 1), vs[size_t(j)] = v0 + k * s[size_t(j)];
+    double* outs[3] = {at.data(), at.data() + kScanPoints, at.data() + 2 * kScanPoints};
+    values.runAll(vs.data(), nullptr, kScanPoints, outs);
+    const int n = static_cast<int>(B.size()) - 1;
+    std::vector<double> w(size_t(n) + 1);
+    double worst = -1.0;
+    for (int j = 0; j < kScanPoints; ++j) {
+      bernsteinValues(n, s[size_t(j)], w.data());
+      Eigen::Vector3d g(outs[0][j], outs[1][j], outs[2][j]);
+      for (int i = 0; i <= n; ++i) g -= w[size_t(i)] * B[size_t(i)];
+      const double gap = g.norm();
+      if (!(gap <= worst)) worst = gap, out.s = s[size_t(j)];
+    }
+    if (!(worst <= tol)) {
+      out.verdict = CurveGap::Found, out.gap = worst;
+      return out;
+    }
+  }
+  // Then the proof, with the derivatives built under a budget of their own (the scene's
+  // derivations keep theirs): an edge whose third derivative would swell past it is undecided.
   std::array<std::array<Expr, 3>, 4> d;  // d[r][c]: the r-th derivative of f_c in v
   d[0] = f;
-  for (int r = 1; r <= 3; ++r)
-    for (int c = 0; c < 3; ++c) d[size_t(r)][size_t(c)] = derivative(d[size_t(r) - 1][size_t(c)], ExprVar::V);
+  try {
+    ExprBudget nodes(kCurveGapNodes, "the proof of a Bezier border");
+    for (int r = 1; r <= 3; ++r)
+      for (int c = 0; c < 3; ++c) d[size_t(r)][size_t(c)] = derivative(d[size_t(r) - 1][size_t(c)], ExprVar::V);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::TooLarge) throw;
+    out.verdict = CurveGap::Undecided, out.gap = INFINITY;
+    return out;
+  }
   std::vector<Expr> roots;
   for (int r = 0; r <= 2; ++r)
     for (int c = 0; c < 3; ++c) roots.push_back(d[size_t(r)][size_t(c)]);
@@ -53,7 +88,6 @@ CurveGap boundCurveGap(const std::array<Expr, 3>& f, double v0, double v1, const
   const double k2 = k * k, k3 = k2 * k;
   // One piece: the values program at its middle, three enclosures, the Bernstein restrictions.
   const size_t perPiece = values.instructions() + third[0].steps() + third[1].steps() + third[2].steps() + 3 * B.size() * B.size();
-  CurveGap out;
   std::vector<Piece> level = {{0.0, 1.0}}, next;
   while (!level.empty()) {
     const size_t cost = perPiece * level.size();

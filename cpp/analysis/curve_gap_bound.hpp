@@ -3,13 +3,15 @@
 // samples, and a narrow feature of the edge between them would pass any sampled certificate
 // (issue 38: a 0.3 spike between the fit's and the certificate's samples was certified G0).
 //
-// On each piece [a, b] of the Bézier parameter s, with g = f(v(s)) - B(s) and h = b - a,
+// First a scan of the distance at 257 points (a border the degree cannot follow is found
+// there, with no derivative built); then, on each piece [a, b] of the Bézier parameter s, with
+// g = f(v(s)) - B(s) and h = b - a,
 //   |g(s)| <= |g(m)| + |g'(m)| h/2 + |g''(m)| h²/8 + max|g'''| h³/48   (Taylor at the middle m),
 // max|g'''| enclosed by interval arithmetic on f''' (expr/interval.hpp) minus the hull of the
 // Bernstein coefficients of B's third derivative on [a, b] (where B follows f the two nearly
 // cancel: a border that is the edge's polynomial is proven in few pieces); pieces are halved
 // until the bound is within the tolerance, or a middle is farther than it (a gap found), or
-// the piece budget is spent.
+// the piece or node budget is spent (undecided: never proven).
 #pragma once
 #include <Eigen/Core>
 #include <array>
@@ -27,6 +29,10 @@ struct CurveGap {
 };
 
 constexpr int kCurveGapPieces = 1 << 14;
+// Points of the first scan (no derivatives), and the nodes the derivatives of one border may
+// take (a budget of its own: the scene's derivations keep theirs).
+constexpr int kScanPoints = 257;
+constexpr size_t kCurveGapNodes = 50000;
 // Operations (interval steps and program instructions) a scene's borders may spend in all.
 constexpr size_t kCurveGapWork = size_t{1} << 25;
 
