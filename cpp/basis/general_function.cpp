@@ -29,7 +29,8 @@ void GeneralFunction::evalMany(const double* v, size_t n, int k, double* out) co
   }
   // The lower orders come with it: they are the derivative's own subexpressions.
   std::vector<double> lower(static_cast<size_t>(k) * n);
-  double* outs[3] = {lower.data(), lower.data() + n, nullptr};
+  double* outs[3] = {nullptr, nullptr, nullptr};
+  for (int r = 0; r < k; ++r) outs[r] = lower.data() + static_cast<size_t>(r) * n;  // none for k = 0 (no offset from null)
   outs[k] = out;
   upTo(k).runAll(v, nullptr, n, outs);
 }
