@@ -254,12 +254,7 @@ TEST_CASE("bezier normal fields: expressions are sampled as the point-by-point v
     patch["name"] = "p" + std::to_string(k);
     doc["patches"].push_back(patch);
   }
-  std::string error;
-  try {
-    parseScene(doc.dump());
-  } catch (const Error& e) {
-    error = std::string(errorCodeName(e.code())) + ": " + e.what();
-  }
+  const std::string error = pdesurf::testing::parseErrorOf(doc.dump());
   CAPTURE(error);
   CHECK(error.rfind("TooLarge: patches[", 0) == 0);
   CHECK(error.find("].normals.field.") != std::string::npos);
@@ -278,12 +273,7 @@ TEST_CASE("bezier assembly: a patch without normals still counts its energy and 
     patch["name"] = "p" + std::to_string(k);
     doc["patches"].push_back(patch);
   }
-  std::string error;
-  try {
-    parseScene(doc.dump());
-  } catch (const Error& e) {
-    error = std::string(errorCodeName(e.code())) + ": " + e.what();
-  }
+  const std::string error = pdesurf::testing::parseErrorOf(doc.dump());
   CAPTURE(error);
   CHECK(fit >= 16);
   CHECK(error.rfind("TooLarge: patches[" + std::to_string(fit) + "].degree: a patch of degree 16x16 is ", 0) == 0);
