@@ -8,6 +8,7 @@
 #include <new>
 
 #include "cad/border_joins.hpp"
+#include "cad/brep_3dm.hpp"
 #include "cad/brep_topology.hpp"
 #include "cad/fitted_joins.hpp"
 #include "cad/iges_writer.hpp"
@@ -50,7 +51,8 @@ val faceOf(const PatchFit& f) {
   return o;
 }
 
-// options: {format: "step" | "iges" | "faces", tolerance: number (absolute; absent or 0: the
+// options: {format: "step" | "iges" | "3dm" | "faces" ("3dm": the faces and each body as one
+// openNURBS Brep, web/cad/write-3dm.js), tolerance: number (absolute; absent or 0: the
 // default, 1e-6 of the scene's diagonal), degree: 3 | 5, onProgress(done, total, patch): called
 // after each patch's fit}.
 val exportCad(const std::string& sceneJson, val options) {
@@ -65,10 +67,10 @@ val exportCad(const std::string& sceneJson, val options) {
         fit.progress = [progress](size_t done, size_t total, const std::string& patch) { progress(double(done), double(total), patch); };
       }
       if (!f.isUndefined()) {
-        if (f.typeOf().as<std::string>() != "string") throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\" or \"faces\"");
+        if (f.typeOf().as<std::string>() != "string") throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\", \"3dm\" or \"faces\"");
         format = f.as<std::string>();
-        if (format != "step" && format != "iges" && format != "faces")
-          throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\" or \"faces\"");
+        if (format != "step" && format != "iges" && format != "3dm" && format != "faces")
+          throw Error(ErrorCode::InvalidField, "format: must be \"step\", \"iges\", \"3dm\" or \"faces\"");
       }
       if (!t.isUndefined()) {
         if (t.typeOf().as<std::string>() != "number" || !(t.as<double>() >= 0) || !std::isfinite(t.as<double>()))
@@ -118,7 +120,22 @@ val exportCad(const std::string& sceneJson, val options) {
       info.tolerance = tolerance;
       // Every join one shared edge, closed shells as solids (cad/brep_topology.hpp).
       const BrepTopology topology = buildTopology(surfaces, borderJoins(solved), tolerance);
-      r.set("text", format == "step" ? writeStep(surfaces, info, &topology) : writeIges(surfaces, info, &topology));
+      if (format == "3dm") {
+        // Each body one joined Brep, as openNURBS archive bytes for rhino3dm's decode().
+        val breps = val::array();
+        for (const OnBrepBody& b : onBreps(surfaces, topology)) {
+          val o = val::object();
+          o.set("closed", b.closed);
+          o.set("faces", copyOut(b.faces));
+          o.set("data", copyOut(std::vector<unsigned char>(b.bytes.begin(), b.bytes.end())));
+          breps.call<void>("push", o);
+        }
+        r.set("breps", breps);
+        r.set("archive3dm", kOn3dmVersion);
+        r.set("opennurbs", double(kOnOpenNurbsVersion));
+      } else {
+        r.set("text", format == "step" ? writeStep(surfaces, info, &topology) : writeIges(surfaces, info, &topology));
+      }
       val shells = val::array();
       for (const BrepShell& sh : topology.shells) {
         val o = val::object();

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cad/brep_topology.hpp"
+#include "cad/face_loops.hpp"
 
 namespace pdesurf {
 
@@ -127,40 +128,6 @@ std::vector<std::string> curveParams(int degree, const std::vector<double>& knot
     for (int d = 0; d < 3; ++d) p.push_back(formatReal(q[d]));
   p.insert(p.end(), {formatReal(knots[size_t(degree)]), formatReal(knots[size_t(count)]), "0.", "0.", planar ? "1." : "0."});
   return p;
-}
-
-// The curve in face f's (u, v) of a use of an edge in its loop (counter-clockwise about the
-// surface's own normal), over the edge curve's parameter: the join's map where the topology
-// made one (the other face of a shared edge), else the border's iso-line; a seam's two uses
-// lie on v0 and v1 (the use running with the curve is v0's: the loop takes v0 forward).
-BrepPcurve usePcurve(const BSplineSurface& s, const BrepTopology& t, int f, const BrepEdgeUse& u) {
-  const BrepEdge& e = t.edges[size_t(u.edge)];
-  for (const BrepPcurve& p : e.pcurves)
-    if (p.face == f && !(e.otherFace == f && e.face == f)) return p;
-  int border = e.border;
-  if (e.face == f && border == 2 && s.closedV && !u.forward) border = 3;  // the seam's v1 use
-  const auto uv = [&](double x) -> Eigen::Vector2d {
-    switch (border) {
-      case 0: return {s.u0(), x};
-      case 1: return {s.u1(), x};
-      case 2: return {x, s.v0()};
-      default: return {x, s.v1()};
-    }
-  };
-  BrepPcurve p;
-  p.face = f, p.degree = 1, p.knots = {e.t0, e.t0, e.t1, e.t1}, p.poles = {uv(e.t0), uv(e.t1)};
-  return p;
-}
-
-// The IGES loops below run counter-clockwise about each surface's own normal: a flipped face's
-// topology loop turned back.
-std::vector<BrepEdgeUse> surfaceLoop(const BrepTopology& t, size_t f) {
-  std::vector<BrepEdgeUse> uses = t.faces[f].loop;
-  if (t.faces[f].flipped) {
-    std::reverse(uses.begin(), uses.end());
-    for (BrepEdgeUse& u : uses) u.forward = !u.forward;
-  }
-  return uses;
 }
 
 // The faces as a B-rep (IGES 5.3 section 4.7 types 186, 514, 510, 508, 504, 502): one vertex

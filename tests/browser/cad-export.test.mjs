@@ -2,7 +2,7 @@
 // web/file-wiring.js, web/export/cad-export.js, the solver worker's exportCad): nothing of
 // them (nor of rhino3dm) is fetched at load; STEP and IGES of you2004-fig4a read back in Open
 // CASCADE within the fit's tolerance of the native CLI's own samples (occt_readback), the
-// .3dm reads back in rhino3dm under node (3 named surfaces, pointAt within the tolerance of
+// .3dm reads back in rhino3dm under node (one valid Brep of the 3 faces, pointAt within the tolerance of
 // the same samples); the line under the buttons gives the achieved figures; a bad tolerance
 // or an unreachable one is a message (text, never markup), nothing is downloaded, and the page
 // keeps working; an edit during an export waits for it. Screenshots of the folder after an
@@ -174,13 +174,19 @@ describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
     const file = rh.File3dm.fromByteArray(new Uint8Array(first.bytes));
     try {
       assert.equal(file.settings().modelAbsoluteTolerance, fit.tolerance);
+      // One body: the three faces joined in one Brep (open: the cylinder's and the plane's far borders).
       const objects = file.objects();
-      assert.equal(objects.count, 3);
+      assert.equal(objects.count, 1);
+      const o = objects.get(0);
+      assert.equal(o.attributes().getUserString('pdesurf.faces'), NAMES.join(', '));
+      const brep = o.geometry();
+      assert.ok(brep.isValid, brep.isValidWithLog[1]);
+      assert.equal(brep.isSolid, false);
+      const faces = brep.faces();
+      assert.equal(faces.count, 3);
       const expected = cliSamples(NAMES);
-      for (let k = 0; k < objects.count; k++) {
-        const o = objects.get(k);
-        assert.equal(o.attributes().name, NAMES[k]);
-        const srf = o.geometry();
+      for (let k = 0; k < faces.count; k++) {
+        const srf = faces.get(k);
         let worst = 0;
         for (const [u, v, x, y, z] of expected[k].samples) {
           const p = srf.pointAt(u, v);
@@ -189,6 +195,7 @@ describe('CAD exports from the page (/app/)', { skip: skip || why }, () => {
         assert.ok(worst <= fit.tolerance, `${NAMES[k]}: ${worst} > ${fit.tolerance}`);
         srf.delete();
       }
+      brep.delete();
     } finally {
       file.delete();
     }

@@ -94,7 +94,7 @@ test('bad options and unreachable tolerances are named errors; the module keeps 
     [{ tolerance: NaN }, /tolerance/],
     [{ tolerance: 'tight' }, /tolerance/],
     [{ degree: 4 }, /degree: must be 3 or 5/],
-    [{ format: 'dxf' }, /format: must be "step", "iges" or "faces"/],
+    [{ format: 'dxf' }, /format: must be "step", "iges", "3dm" or "faces"/],
   ];
   for (const [options, message] of bad) {
     assert.throws(() => solver.exportCad(scene('you2004-fig4a'), options), (e) => e instanceof PdesurfError && e.code === 'InvalidField' && message.test(e.message));

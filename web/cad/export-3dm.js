@@ -25,12 +25,12 @@ function start() {
   };
 }
 
-/** The bytes of a .3dm file of `surfaces` (write-3dm.js's write3dm, off the page's thread). */
-export function export3dm(surfaces, { tolerance, title } = {}) {
+/** The bytes of a .3dm file of `surfaces` joined as `breps` (write-3dm.js's write3dm, off the page's thread). */
+export function export3dm(surfaces, { tolerance, title, breps, archive } = {}) {
   if (!worker) start();
   const id = nextId++;
   return new Promise((resolve, reject) => {
     pending.set(id, { resolve, reject });
-    worker.postMessage({ id, surfaces, tolerance, title });
+    worker.postMessage({ id, surfaces, tolerance, title, breps, archive });
   });
 }

@@ -39,11 +39,11 @@ export function parseTolerance(text) {
 export async function cadFile({ solver, sceneText, format, tolerance, base, onProgress }) {
   const f = CAD_FORMATS[format];
   if (!f) throw invalid(`no CAD format ${JSON.stringify(format)}`);
-  const fit = await solver.exportCad(sceneText, { format: format === '3dm' ? 'faces' : format, tolerance }, { onProgress });
+  const fit = await solver.exportCad(sceneText, { format, tolerance }, { onProgress });
   let data = fit.text;
   if (format === '3dm') {
     const { export3dm } = await import('../cad/export-3dm.js');
-    data = await export3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title });
+    data = await export3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title, breps: fit.breps, archive: fit.archive });
   }
   return { data, name: `${base}.${f.ext}`, type: f.type, fit };
 }

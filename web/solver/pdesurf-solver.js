@@ -124,8 +124,9 @@ function callModule(Module, name, args, what) {
   return res;
 }
 
-// Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text
-// (docs/wasm-api.md, docs/cad-export.md): { tolerance, faces: [...], text? }.
+// Every patch as a certified B-spline face, and with format 'step' or 'iges' the file's text,
+// with '3dm' each body as a Brep to decode (docs/wasm-api.md, docs/cad-export.md):
+// { tolerance, faces: [...], text?, shells?, breps?, archive? }.
 function exportCadWith(Module, scene, { format = 'faces', tolerance, degree, onProgress } = {}) {
   const options = { format };
   if (tolerance !== undefined) options.tolerance = tolerance;
@@ -135,6 +136,11 @@ function exportCadWith(Module, scene, { format = 'faces', tolerance, degree, onP
   const out = { title: res.title, tolerance: res.tolerance, faces: Array.from(res.faces || []), joins: Array.from(res.joins || []), text: res.text };
   // STEP: the shells the file holds ({ faces, closed, volume }; a closed one is a solid).
   if (res.shells) out.shells = Array.from(res.shells);
+  // .3dm: each body one openNURBS Brep's bytes, for rhino3dm's decode (web/cad/write-3dm.js).
+  if (res.breps) {
+    out.breps = Array.from(res.breps, (b) => ({ closed: b.closed, faces: Array.from(b.faces), data: b.data }));
+    out.archive = { archive3dm: res.archive3dm, opennurbs: res.opennurbs };
+  }
   return out;
 }
 
