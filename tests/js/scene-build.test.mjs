@@ -102,7 +102,7 @@ describe('duplicate', () => {
     assert.equal(Object.keys(scene.parameters).length, params);
     assert.deepEqual(scene.patches[1], { ...scene.patches[0], name: 'annulus2' });
     // A blend's copy would meet the borders the blend meets: three sheets on each, refused.
-    refuses(scene, () => duplicatePatch(scene, 'blend1'), /^blend2\.u0\.at: t0 of "annulus1" is already met by blend1\.u0: three sheets would meet along it/);
+    refuses(scene, () => duplicatePatch(scene, 'blend1'), /^"blend1" meets "annulus1" \(its u0\): a copy would meet the same edge and three sheets would meet along it; detach it first to duplicate it$/);
     assert.equal(check(scene).status, 0);
   });
 
@@ -110,7 +110,7 @@ describe('duplicate', () => {
     const scene = fillet();
     scene.patches[2].ends.u1.at = { t: 'cylinder1_z0 + 0.1*sin(v)', replaces: 't0' };
     // Its copy meets annulus1's t0 (three sheets) and would trim cylinder1 along a second curve.
-    refuses(scene, () => duplicatePatch(scene, 'blend1'), /already met by blend1\.u0|already trimmed along a curve by blend1\.u1/);
+    refuses(scene, () => duplicatePatch(scene, 'blend1'), /^"blend1" meets "annulus1" \(its u0\): a copy would meet the same edge/);
     refuses(scene, () => duplicatePatch(scene, 'nope'), /no patch named "nope"/);
   });
 });

@@ -7,7 +7,6 @@
 // trig-curve.js (trigCurveFromSamples).
 import { isObject, patchesOf, requirePatch, checkNewPatchName, findPatch, parameterPrefix, uniqueParameterName } from './patch-names.js';
 import { namesIn, replaceNames } from './expr-text.js';
-import { existingEnds, checkEndRules } from './scene-join.js';
 import { referencesOf } from './patch-references.js';
 
 export { dependentsOf, deletePatch } from './patch-delete.js';
@@ -93,18 +92,19 @@ function copyName(scene, name) {
  * own copies of the parameters only this patch uses (the ones addSurface made for it), so
  * its sliders are its own; parameters other patches use too stay shared. With
  * { share: true } every parameter is shared (the copy follows the original's sliders).
- * A surface's `meets` is not copied (it names the original's blend end).
+ * A surface's `meets` is not copied (it names the original's blend end). A patch that meets
+ * another's edge (by its ends, borders or loop) is refused: its copy would meet it too.
  */
 export function duplicatePatch(scene, name, options = {}) {
   const patch = requirePatch(scene, name);
   const copy = structuredClone(patch);
   copy.name = copyName(scene, name);
   delete copy.meets;
-  if (copy.kind === 'pde' && isObject(copy.ends)) {
-    const mine = Object.entries(copy.ends).filter(([, e]) => isObject(e)).map(([end, e]) => ({
-      surface: e.surface, border: isObject(e.at) ? (e.at.replaces ?? 't0') : e.at, curve: isObject(e.at), where: `${copy.name}.${end}`,
-    }));
-    checkEndRules([...existingEnds(scene), ...mine]);
+  // A copy would meet every edge its original meets (a blend's or a chain's ends, a Bézier
+  // border, a fill's loop): three sheets along each, which the core refuses. Said here, by name.
+  const edge = referencesOf(copy).find((r) => r.role !== 'meets');
+  if (edge) {
+    throw new Error(`${JSON.stringify(name)} meets ${JSON.stringify(edge.holder[edge.key])} (its ${edge.role === 'loop' ? `border on ${edge.where}` : edge.where}): a copy would meet the same edge and three sheets would meet along it; detach it first to duplicate it`);
   }
   const own = {};
   if (!options.share && isObject(scene.parameters)) {
