@@ -215,26 +215,62 @@ LeastSquares leastSquares(const SeparableSurface& s, int p, const SpanSet& U, co
 
 }  // namespace
 
+namespace {
+
+// What the fit must respect before it starts: the surface's size (from a coarse look: the
+// degenerate-border and seam tests are relative to it), a seam, and the creases along v.
+Shape shapeOf(const SeparableSurface& s, std::vector<double>* creases) {
+  Shape shape;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 16; ++j) {
+      const Eigen::Vector3d x = evalPoint(s, s.u0 + (s.u1 - s.u0) * i / 16, s.v0 + (s.v1 - s.v0) * j / 16);
+      lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    }
+  shape.scale = (hi - lo).norm();
+  if (!std::isfinite(shape.scale)) throw Error(ErrorCode::NonFinite, "the surface is not finite");
+  seamOf(s, shape.scale, &shape.closed, &shape.periodic);
+  *creases = findCreases(s, &shape.kinkAtEnds);
+  shape.periodic = shape.periodic && creases->empty();
+  return shape;
+}
+
+// The certificate's points for the current spans, a crease marked where a v-line lies on one
+// (a seam that is closed but not smooth is one too).
+CertificateGrid certificateGrid(const SpanSet& U, const SpanSet& V, const Shape& shape) {
+  CertificateGrid grid;
+  certificateLine(U, &grid.u, &grid.uSpan);
+  certificateLine(V, &grid.v, &grid.vSpan);
+  grid.vCrease.assign(grid.v.size(), false);
+  for (size_t j = 0; j < grid.v.size(); ++j) {
+    const size_t span = size_t(grid.vSpan[std::min(j, grid.vSpan.size() - 1)]);
+    for (size_t b : {span, span + 1})
+      if (V.crease[b] && grid.v[j] == V.breaks[b]) grid.vCrease[j] = true;
+  }
+  if ((shape.closed && !shape.periodic) || shape.kinkAtEnds) grid.vCrease.front() = grid.vCrease.back() = true;
+  return grid;
+}
+
+Error limitsReached(double reached, const FitOptions& o, const FitReport& rep) {
+  return Error(ErrorCode::TooLarge,
+               "the fit reached a certified deviation of " + number(reached) + " (tolerance " + number(o.tolerance) +
+                   "), normals within " + number(rep.normalDeviationDeg) + "° (" + number(o.normalToleranceDeg) + "°)" +
+                   " (limits: " + std::to_string(kFitMaxSpans) + " spans per direction, " + std::to_string(kFitMaxGridPoints) +
+                   " certificate points, " + std::to_string(kFitMaxIterations) + " refinements)");
+}
+
+}  // namespace
+
+// Fit, certify, refine where the certificate fails, until the tolerance (and the normals'
+// target) is met or a limit is reached; the best fit within the tolerance is kept.
 BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitReport* report) {
   if (!(o.tolerance > 0) || !std::isfinite(o.tolerance))
     throw Error(ErrorCode::InvalidField, "tolerance: must be a positive finite number, not " + number(o.tolerance));
   if (o.degree != 3 && o.degree != 5) throw Error(ErrorCode::InvalidField, "degree: must be 3 or 5");
   FitReport rep;
-  Shape shape;
-  // Scale from a coarse look: the degenerate-border and seam tests are relative to it.
-  {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
-    for (int i = 0; i <= 16; ++i)
-      for (int j = 0; j <= 16; ++j) {
-        const Eigen::Vector3d x = evalPoint(s, s.u0 + (s.u1 - s.u0) * i / 16, s.v0 + (s.v1 - s.v0) * j / 16);
-        lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-      }
-    shape.scale = rep.scale = (hi - lo).norm();
-    if (!std::isfinite(rep.scale)) throw Error(ErrorCode::NonFinite, "the surface is not finite");
-  }
-  seamOf(s, rep.scale, &shape.closed, &shape.periodic);
-  const std::vector<double> creases = findCreases(s, &shape.kinkAtEnds);
-  shape.periodic = shape.periodic && creases.empty();
+  std::vector<double> creases;
+  const Shape shape = shapeOf(s, &creases);
+  rep.scale = shape.scale;
   rep.periodicV = shape.periodic;
   rep.creases = int(creases.size());
   SpanSet U = initialSpans(s.u0, s.u1, 4, 4, {}), V = initialSpans(s.v0, s.v1, shape.periodic ? 8 : 4, 4, creases);
@@ -246,27 +282,13 @@ BSplineSurface fitSurface(const SeparableSurface& s, const FitOptions& o, FitRep
   FourthBounds boundB;
   bool spansChanged = true;
   for (int iter = 1;; ++iter) {
-    CertificateGrid grid;
-    certificateLine(U, &grid.u, &grid.uSpan);
-    certificateLine(V, &grid.v, &grid.vSpan);
-    grid.vCrease.assign(grid.v.size(), false);
-    for (size_t j = 0; j < grid.v.size(); ++j) {
-      const size_t span = size_t(grid.vSpan[std::min(j, grid.vSpan.size() - 1)]);
-      for (size_t b : {span, span + 1})
-        if (V.crease[b] && grid.v[j] == V.breaks[b]) grid.vCrease[j] = true;
-    }
-    // A seam that is not smooth (closed, not periodic) is a crease too.
-    if ((shape.closed && !shape.periodic) || shape.kinkAtEnds) grid.vCrease.front() = grid.vCrease.back() = true;
+    const CertificateGrid grid = certificateGrid(U, V, shape);
     const long points = long(grid.u.size()) * long(grid.v.size());
     if (iter > kFitMaxIterations || U.count() > kFitMaxSpans || V.count() > kFitMaxSpans || points > kFitMaxGridPoints) {
       // The tolerance is a promise; the normals' target is best effort: a fit within the
       // tolerance is kept and reports the normals it reached (normalsMet false).
       if (reached <= o.tolerance) break;
-      throw Error(ErrorCode::TooLarge,
-                  "the fit reached a certified deviation of " + number(reached) + " (tolerance " + number(o.tolerance) +
-                      "), normals within " + number(rep.normalDeviationDeg) + "° (" + number(o.normalToleranceDeg) + "°)" +
-                      " (limits: " + std::to_string(kFitMaxSpans) + " spans per direction, " + std::to_string(kFitMaxGridPoints) +
-                      " certificate points, " + std::to_string(kFitMaxIterations) + " refinements)");
+      throw limitsReached(reached, o, rep);
     }
     const SurfaceOnGrid surface(s, grid.u);
     // This round's point evaluations (five partials each for the certificate, three more for a

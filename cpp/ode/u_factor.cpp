@@ -99,9 +99,13 @@ void UFactor::tabulate(const double* u, int count, int maxDerivative, double* ou
           out[static_cast<size_t>(m) * count + i] += acc;
         }
       } else {
+        // x is real: Horner in real-times-complex steps, and only Re(e · q(x)) is kept.
         const cplx e = kept ? kept[i] : std::exp(piece.rate * x);
-        for (int m = 0; m <= maxDerivative; ++m)
-          out[static_cast<size_t>(m) * count + i] += (e * evalPoly(q[m], cplx(x))).real();
+        for (int m = 0; m <= maxDerivative; ++m) {
+          double re = 0.0, im = 0.0;
+          for (size_t k = q[m].size(); k-- > 0;) re = re * x + q[m][k].real(), im = im * x + q[m][k].imag();
+          out[static_cast<size_t>(m) * count + i] += e.real() * re - e.imag() * im;
+        }
       }
     }
   }
