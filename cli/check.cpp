@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "analysis/bodies.hpp"
+#include "analysis/report_json.hpp"
 #include "analysis/interior_creases.hpp"
 #include "analysis/join_certificate.hpp"
 #include "cli.hpp"
@@ -41,39 +42,23 @@ std::vector<InteriorCreases> creases(const std::vector<SolvedPatch>& solved, con
   return out;
 }
 
+// The report (analysis/report_json.hpp) with what only the CLI measures: the PDE residual and
+// the creases inside each patch.
 nlohmann::json toJson(const SceneReport& r, const std::vector<PatchResidual>& res, const std::vector<InteriorCreases>& cr,
                       const std::vector<Body>& bs) {
   using nlohmann::json;
-  json joins = json::array(), seams = json::array(), crossings = json::array();
-  for (const JoinResult& j : r.seams)
-    seams.push_back({{"patch", j.patch}, {"level", levelName(j.level)}, {"sharp_in_data", j.level == 0}, {"size", j.size}, {"g0", j.g0}, {"g1_deg", j.g1Deg},
-                     {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold}, {"degenerate", j.degenerate}, {"worst_u", j.worstV},
-                     {"ok", j.ok}});
-  for (const JoinResult& j : r.joins)
-    joins.push_back({{"patch", j.patch}, {"end", j.end}, {"surface", j.surface}, {"edge", j.edge}, {"level", levelName(j.level)},
-                     {"size", j.size}, {"g0", j.g0}, {"g1_deg", j.g1Deg}, {"g2_rel", j.level == 2 ? json(j.g2Rel) : json(nullptr)}, {"fold", j.fold},
-                     {"degenerate", j.degenerate}, {"worst_v", j.worstV}, {"ok", j.ok}});
-  for (const Crossing& c : r.crossings)
-    crossings.push_back({{"patch", c.patch}, {"other", c.other}, {"u", c.u}, {"v", c.v}, {"other_u", c.otherU}, {"other_v", c.otherV},
-                         {"triangles", c.triangles}});
+  json report = reportJson(r, bs);  // the module's report, the same keys
   json interior = json::array();
   for (const PatchResidual& p : res)
     interior.push_back({{"patch", p.patch}, {"method", p.method}, {"residual", p.r.absolute}, {"residual_rel", p.r.relative},
                         {"worst_u", p.r.u}, {"worst_v", p.r.v}});
-  json centres = json::array();
-  for (const FillCentre& c : r.centres)
-    centres.push_back({{"patch", c.patch}, {"normal_spread_deg", c.normalSpreadDeg}, {"normal_spread_outer_deg", c.normalSpreadOuterDeg}, {"fold", c.fold}, {"curvature_near", c.curvatureNear},
-                       {"curvature_ratio", c.curvatureRatio}, {"ok", c.ok}});
   json creases = json::array();
   for (const InteriorCreases& c : cr)
     creases.push_back({{"patch", c.patch}, {"coarse_deg", c.coarseDeg}, {"fine_deg", c.fineDeg}, {"crease_deg", c.creaseDeg}, {"worst_u", c.u},
                        {"worst_v", c.v}, {"smooth", c.ok}});
-  json bodies = json::array();
-  for (const Body& b : bs)
-    bodies.push_back({{"patches", b.patches}, {"closed", b.closed}, {"area", b.area}, {"volume", b.closed ? json(b.volume) : json(nullptr)},
-                      {"free_edges", b.freeEdges}});
-  return {{"ok", r.ok}, {"scene_size", r.sceneSize}, {"joins", joins}, {"seams", seams}, {"centres", centres}, {"crossings", crossings}, {"interior", interior},
-          {"creases", creases}, {"bodies", bodies}};
+  report["interior"] = interior;
+  report["creases"] = creases;
+  return report;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 #include <emscripten/val.h>
 
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <new>
 #include <stdexcept>
@@ -17,6 +18,33 @@ namespace pdesurf::wasm {
 template <class T>
 emscripten::val copyOut(const std::vector<T>& v) {
   return emscripten::val(emscripten::typed_memory_view(v.size(), v.data())).call<emscripten::val>("slice");
+}
+
+// JSON as a JS value (objects, arrays, strings, numbers, booleans, null), as JSON.parse of its
+// text would give: the core's report serialiser feeds the CLI and the module alike.
+inline emscripten::val jsonValue(const nlohmann::json& j) {
+  using emscripten::val;
+  switch (j.type()) {
+    case nlohmann::json::value_t::object: {
+      val o = val::object();
+      for (auto it = j.begin(); it != j.end(); ++it) o.set(it.key(), jsonValue(it.value()));
+      return o;
+    }
+    case nlohmann::json::value_t::array: {
+      val a = val::array();
+      for (const auto& x : j) a.call<void>("push", jsonValue(x));
+      return a;
+    }
+    case nlohmann::json::value_t::string: return val(j.get<std::string>());
+    case nlohmann::json::value_t::boolean: return val(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return val(double(j.get<int64_t>()));
+    case nlohmann::json::value_t::number_unsigned: return val(double(j.get<uint64_t>()));
+    case nlohmann::json::value_t::number_float: {
+      const double x = j.get<double>();
+      return std::isfinite(x) ? val(x) : val::null();
+    }
+    default: return val::null();
+  }
 }
 
 inline emscripten::val failure(const char* code, const std::string& message) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "analysis/bodies.hpp"
+#include "analysis/report_json.hpp"
 #include "analysis/join_certificate.hpp"
 #include "analysis/watertight_mesh.hpp"
 #include "common/errors.hpp"
@@ -40,14 +41,7 @@ val modelMesh(const std::string& sceneJson, const val& nuArg, const val& nvArg) 
       parts.call<void>("push", o);
     }
     val bodies = val::array();
-    for (const Body& b : measureBodies(solved, size)) {
-      val o = val::object();
-      o.set("closed", b.closed);
-      o.set("area", b.area);
-      if (b.closed) o.set("volume", b.volume);
-      o.set("freeEdges", b.freeEdges);
-      bodies.call<void>("push", o);
-    }
+    for (const Body& b : measureBodies(solved, size)) bodies.call<void>("push", jsonValue(bodyJson(b)));  // as the report has them
     val out = val::object();
     out.set("ok", true);
     out.set("title", scene.title);

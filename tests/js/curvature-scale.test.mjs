@@ -57,7 +57,7 @@ test('legend numbers are short', () => {
 
 const RAW = {
   ok: false,
-  sceneSize: 4.2,
+  scene_size: 4.2,
   joins: [
     { patch: 'blend', end: 0, surface: '<b>cyl</b>', edge: 't0', level: 'G1', g0: 1e-9, g1_deg: 0.01, g2_rel: null, fold: false, ok: true, degenerate: 0 },
     { patch: 'blend', end: 1, surface: 'plane', edge: 't0', level: 'G2', g0: 2e-8, g1_deg: 3.5, g2_rel: 0.25, fold: true, ok: false, degenerate: 2 },

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
-import { loadTestSolver } from './test-solver.mjs';
+import { loadTestSolver, wasmDir } from './test-solver.mjs';
 
 const root = new URL('../../', import.meta.url);
 const solver = await loadTestSolver();
@@ -45,6 +45,26 @@ test('the join report matches pdesurf check --json, join for join', () => {
       assert.ok(Math.abs(j.g0 - n.g0) < 1e-12 && Math.abs(j.g1Deg - n.g1_deg) < 1e-9, file);
     });
     assert.deepEqual(report.crossings.map((c) => [c.patch, c.other]), native.crossings.map((c) => [c.patch, c.other]), file);
+  }
+});
+
+test('one serialiser: the module\'s raw report has the keys and the figures of pdesurf check --json', async () => {
+  // The raw module, past the page's wrapper (which turns the report into the page's camelCase).
+  const { default: create } = await import(new URL('pdesurf.js', wasmDir).href);
+  const Module = await create({ wasmBinary: readFileSync(new URL('pdesurf.wasm', wasmDir)) });
+  for (const file of ['bottle-solid.json', 'you2004-fig6.json', 'fill-four-strips.json']) {
+    const raw = Module.solveSceneWith(sceneText(file), 48, 48, { curvature: false, joins: true, crossings: true, topology: false }).report;
+    const r = spawnSync(cli, ['check', new URL(`examples/${file}`, root).pathname, '--json', '--grid', '48x48'], { encoding: 'utf8' });
+    const native = JSON.parse(r.stdout);
+    // The CLI adds what only it measures (the PDE residual, the creases); the module, whether it looked for crossings.
+    const { interior, creases, ...shared } = native;
+    assert.ok(interior && creases, file);
+    const { crossings_checked: checked, ...module } = JSON.parse(JSON.stringify(raw));
+    assert.equal(checked, true, file);
+    const keys = (x) => (Array.isArray(x) ? x.map(keys) : x && typeof x === 'object' ? Object.fromEntries(Object.keys(x).sort().map((k) => [k, keys(x[k])])) : typeof x);
+    assert.deepEqual(keys(module), keys(shared), `${file}: the same keys`);
+    assert.equal(module.bodies.length, shared.bodies.length, file);
+    module.bodies.forEach((b, k) => assert.ok(Math.abs(b.area - shared.bodies[k].area) <= 1e-9 * b.area, `${file}: area`));
   }
 });
 

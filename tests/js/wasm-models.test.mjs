@@ -97,16 +97,16 @@ test('the outliner shows the chain; deleting a patch takes what is downstream of
 });
 
 test('a seam shows as text, whatever the patch is called; a report without seams has none', () => {
-  const seam = { patch: '<i>s</i>', end: 'v1', surface: '<i>s</i>', edge: 'v0', level: 'G0', g0: 4.47e-17, g1_deg: 17, g2_rel: null, fold: false, degenerate: 0, worstV: 0.5, ok: true };
-  const r = normaliseReport({ ok: true, sceneSize: 1, joins: [], seams: [seam], crossings: [], centres: [] });
+  const seam = { patch: '<i>s</i>', end: 'v1', surface: '<i>s</i>', edge: 'v0', level: 'G0', g0: 4.47e-17, g1_deg: 17, g2_rel: null, fold: false, degenerate: 0, worst_u: 0.5, ok: true };
+  const r = normaliseReport({ ok: true, scene_size: 1, joins: [], seams: [seam], crossings: [], centres: [] });
   assert.equal(r.seams.length, 1);
   assert.equal(seamText(r.seams[0]), '“<i>s</i>” seam v0 = v1 (sharp in its data): G0, gap 4.5e-17, angle 17°: ok');
   assert.equal(seamText({ ...r.seams[0], level: 'G2', g1Deg: null, ok: false }), '“<i>s</i>” seam v0 = v1: G2, gap 4.5e-17, angle —: FAILS');
-  assert.deepEqual(normaliseReport({ ok: true, sceneSize: 1, joins: [], crossings: [] }).seams, []);
+  assert.deepEqual(normaliseReport({ ok: true, scene_size: 1, joins: [], crossings: [] }).seams, []);
 });
 
 test('a centre shows as text, whatever the patch is called', () => {
-  const r = normaliseReport({ ok: true, sceneSize: 1, joins: [], crossings: [], centres: [{ patch: '<b>x</b>', normalSpreadDeg: 0.02, normalSpreadOuterDeg: 1.2, fold: false, curvatureNear: 3, curvatureRatio: 1.01, ok: true }] });
+  const r = normaliseReport({ ok: true, scene_size: 1, joins: [], crossings: [], centres: [{ patch: '<b>x</b>', normal_spread_deg: 0.02, normal_spread_outer_deg: 1.2, fold: false, curvature_near: 3, curvature_ratio: 1.01, ok: true }] });
   assert.equal(r.centres.length, 1);
   assert.equal(centreText(r.centres[0]), '“<b>x</b>” centre: normal spread 0.020° (from 1.2°), no fold, curvature ratio 1.01: regular');
 });

@@ -97,7 +97,7 @@ function reportStepWith(Module, budgetMs) {
 
 // The model's watertight mesh for the mesh exports (docs/wasm-api.md, modelMesh): { title,
 // positions, normals (Float32Array, shared by the patches), parts: [{ name, body, indices }],
-// bodies: [{ closed, area, volume?, freeEdges }] }.
+// bodies: [{ patches, closed, area, volume (null when open), free_edges }] }, the bodies as the report has them.
 function modelMeshWith(Module, scene, { nu = 64, nv = 64 } = {}) {
   const res = callModule(Module, 'modelMesh', [sceneText(scene), nu, nv], 'mesh');
   return { title: res.title, positions: res.positions, normals: res.normals, parts: Array.from(res.parts), bodies: Array.from(res.bodies) };

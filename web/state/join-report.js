@@ -1,5 +1,6 @@
-// The module's join report (docs/wasm-api.md, solveSceneWith {joins: true}) as plain,
-// checked data for the joins panel and the highlights. Pure: unit-tested in tests/js.
+// The module's join report (docs/wasm-api.md, solveSceneWith {joins: true}; the keys of
+// `pdesurf check --json`, cpp/analysis/report_json.hpp) as plain, checked data in the page's
+// own camelCase for the joins panel and the highlights. Pure: unit-tested in tests/js.
 // Every string from the scene stays a string; the panel shows it with textContent.
 
 // The side of the blend that joins: "u0", "u1" (the ends u = 0, 1) or "v0", "v1" (the
@@ -29,7 +30,7 @@ export function normaliseReport(raw) {
     fold: Boolean(j.fold),
     ok: Boolean(j.ok),
     degenerate: Number(j.degenerate) || 0,
-    worstV: num(j.worstV), // where along the join the worst measure is
+    worstV: num(j.worst_v ?? j.worst_u), // where along the join the worst measure is (a seam's: a u)
   });
   const joins = Array.from(raw.joins || [], joinOf);
   // Closed patches joined to themselves across v0 = v1 (a fill, a tube): worstV is the u there.
@@ -43,15 +44,15 @@ export function normaliseReport(raw) {
   }));
   // Crossings are checked only when asked ({crossings: true}); a module that predates the
   // option always checked them.
-  const crossingsChecked = raw.crossingsChecked !== false;
+  const crossingsChecked = raw.crossings_checked !== false;
   // Version 4: every fill's centre (analysis/fill_centre.hpp).
   const centres = Array.from(raw.centres || [], (c) => ({
     patch: String(c.patch),
-    normalSpreadDeg: num(c.normalSpreadDeg),
-    normalSpreadOuterDeg: num(c.normalSpreadOuterDeg),
+    normalSpreadDeg: num(c.normal_spread_deg),
+    normalSpreadOuterDeg: num(c.normal_spread_outer_deg),
     fold: Boolean(c.fold),
-    curvatureNear: num(c.curvatureNear),
-    curvatureRatio: num(c.curvatureRatio),
+    curvatureNear: num(c.curvature_near),
+    curvatureRatio: num(c.curvature_ratio),
     ok: Boolean(c.ok),
   }));
   // Issue 36: the model's bodies (the patches the joins connect), closed or open, area, volume.
@@ -60,9 +61,9 @@ export function normaliseReport(raw) {
     closed: Boolean(b.closed),
     area: num(b.area),
     volume: num(b.volume),
-    freeEdges: Number(b.freeEdges) || 0,
+    freeEdges: Number(b.free_edges) || 0,
   }));
-  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.sceneSize), joins, seams, crossings, crossingsChecked, centres, bodies };
+  const out = { ok: Boolean(raw.ok), sceneSize: Number(raw.scene_size), joins, seams, crossings, crossingsChecked, centres, bodies };
   // A declared join the module cannot certify: the scene still draws, the report says why.
   if (raw.error) out.error = { code: String(raw.error.code ?? 'Internal'), message: String(raw.error.message ?? '') };
   return out;
