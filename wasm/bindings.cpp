@@ -12,6 +12,7 @@
 #include "bezier/bernstein.hpp"
 #include "common/errors.hpp"
 #include "ode/basis_cache.hpp"
+#include "scene/patch_kinds.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
 #include "surface/tabulation.hpp"
@@ -231,10 +232,25 @@ val solveSceneWith(const std::string& sceneJson, val nu, val nv, val options) {
 
 std::string version() { return "0.1.0"; }
 
+// The core's table of patch kinds (scene/patch_kinds.hpp): [{ name, since, solvedAs }], for the
+// test that the page's own table (web/state/patch-kinds.js) agrees with it.
+val patchKindList() {
+  val out = val::array();
+  for (const PatchKindEntry& k : patchKinds()) {
+    val o = val::object();
+    o.set("name", std::string(k.name));
+    o.set("since", k.since);
+    o.set("solvedAs", std::string(k.solvedAs == PatchKind::Pde ? "pde" : k.solvedAs == PatchKind::Bezier ? "bezier" : "primary"));
+    out.call<void>("push", o);
+  }
+  return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(pdesurf) {
   emscripten::function("solveScene", &solveScenePlain);
   emscripten::function("solveSceneWith", &solveSceneWith);
   emscripten::function("version", &version);
+  emscripten::function("patchKinds", &patchKindList);
 }

@@ -41,7 +41,7 @@ val modelMesh(const std::string& sceneJson, const val& nuArg, const val& nvArg) 
       parts.call<void>("push", o);
     }
     val bodies = val::array();
-    for (const Body& b : measureBodies(solved, size)) bodies.call<void>("push", jsonValue(bodyJson(b)));  // as the report has them
+    for (const Body& b : measureBodies(solved, size)) bodies.call<void>("push", wasm::jsonValue(bodyJson(b)));  // as the report has them
     val out = val::object();
     out.set("ok", true);
     out.set("title", scene.title);

@@ -1,9 +1,8 @@
 // The editor, composed (a chunk the page loads once its first surface is on screen,
 // main.js): the document and its one door for edits (state/document.js), the scene session
 // (scene-session.js: openings, solves, drawing), the page's chrome (toolbar, layout, help)
-// and the features, each subscribing to the document's signals: panel, edits, history,
-// Bézier editing, share, files, building, analysis.
-import { createPanelWiring } from './panel-wiring.js';
+// and the features (web/features/), each made from one context object and subscribing to the
+// document's signals: panel, history, Bézier editing, share, files, building, analysis.
 import { createDocument } from './state/document.js';
 import { subscribeToEdits } from './edit-subscribers.js';
 import { createGallery } from './ui/gallery.js';
@@ -14,17 +13,18 @@ import { watchNumberControls } from './ui/number-access.js';
 import { installShortcuts } from './keyboard-shortcuts.js';
 import { createSceneState } from './state/scene-state.js';
 import { edits } from './state/edits.js';
-import { createShareWiring } from './share-wiring.js';
-import { createAnalysisWiring } from './analysis-wiring.js';
-import { createFileWiring } from './file-wiring.js';
-import { createHistoryWiring } from './history-wiring.js';
-import { createBuildWiring } from './build-wiring.js';
 import { createSceneSession } from './scene-session.js';
+import { createPanelFeature } from './features/panel.js';
+import { createShareFeature } from './features/share.js';
+import { createAnalysisFeature } from './features/analysis.js';
+import { createFilesFeature } from './features/files.js';
+import { createHistoryFeature } from './features/history.js';
+import { createBuildFeature } from './features/build.js';
 
 /**
  * What the page made first (main.js): { examples (the catalogue), solver and relay (its
- * results reach the session through it), viewer, bezier (bezier-wiring.js), status, hooks,
- * titleEl, fail(err), onAnalysis(analysis): the analysis wiring, for the test hooks }. Opens
+ * results reach the session through it), viewer, bezier (features/bezier.js), status, hooks,
+ * titleEl, fail(err), onAnalysis(analysis): the analysis feature, for the test hooks }. Opens
  * the scene the page's hash names; resolves once it is opened.
  */
 export async function startEditor({ examples, solver, relay, viewer, bezier, status, hooks, titleEl, fail, onAnalysis }) {
@@ -34,11 +34,12 @@ export async function startEditor({ examples, solver, relay, viewer, bezier, sta
   const state = createSceneState();
   hooks.sceneText = () => state.text();
   const doc = createDocument(state);
-  let share = null;
-  const panel = createPanelWiring({ doc, share: () => share, bezier });
-  let session = null;
-  const gallery = createGallery(document.getElementById('gallery'), examples, (id) => session.openExample(id), layout);
-  session = createSceneSession({ doc, solver, relay, viewer, panel, gallery, status, hooks, titleEl, examples, fail });
+  // The context every feature is made from; features made later (share, files, …) join it.
+  const ctx = { doc, state, solver, viewer, bezier, status, hooks, titleEl, layout, toolbar };
+  ctx.panel = createPanelFeature(ctx);
+  const gallery = createGallery(document.getElementById('gallery'), examples, (id) => ctx.session.openExample(id), layout);
+  ctx.session = createSceneSession({ doc, solver, relay, viewer, panel: ctx.panel, gallery, status, hooks, titleEl, examples, fail });
+  const { panel, session } = ctx;
   // For scripts/bench-page.mjs: a grid past the panel's 256 (the page path at 1024²).
   hooks.requestGrid = (nu, nv) => doc.apply(edits.setGrid({ nu, nv }));
   subscribeToEdits(doc, { panel, status, scheduler: session.scheduler });
@@ -52,24 +53,20 @@ export async function startEditor({ examples, solver, relay, viewer, bezier, sta
       layout.showPanel(false);
     }
   });
-  const undoRedo = createHistoryWiring({
-    hooks, restore: session.restoreScene, camera: () => viewer.getCamera(),
-    read: () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent }),
-  });
-  addToolbarButtons({ toolbar, layout, help, viewer, undoRedo });
+  ctx.history = createHistoryFeature(ctx);
+  addToolbarButtons({ toolbar, layout, help, viewer, undoRedo: ctx.history });
   // An edit the solver judges is a step only once it is kept.
-  doc.on('judging', () => undoRedo.hold());
-  doc.on('judged', (kept) => undoRedo.release(kept));
+  doc.on('judging', () => ctx.history.hold());
+  doc.on('judged', (kept) => ctx.history.release(kept));
   installShortcuts({ fit: () => viewer.fit(true), help, layout });
 
-  bezier.connect({ state, viewer, panel, doc, status });
-  share = createShareWiring({ viewer, panel, status, hooks });
-  const files = createFileWiring({ panel, viewer, state, status, hooks, solver, showScene: session.showScene,
-    currentTitle: () => titleEl.textContent, setNotice: session.setNotice });
-  createBuildWiring({ doc, panel, viewer, hooks, openBuilt: session.openBuilt });
-  const analysis = createAnalysisWiring({ doc, panel, viewer, hasAnalysis: true, requestSolve: session.requestQuiet });
-  onAnalysis(analysis);
-  session.attach({ share, files, history: undoRedo, solveOptions: () => analysis.solveOptions() });
+  bezier.connect(ctx);
+  ctx.share = createShareFeature(ctx);
+  ctx.files = createFilesFeature(ctx);
+  createBuildFeature(ctx);
+  ctx.analysis = createAnalysisFeature(ctx);
+  onAnalysis(ctx.analysis);
+  session.attach({ share: ctx.share, files: ctx.files, history: ctx.history, solveOptions: () => ctx.analysis.solveOptions() });
   await session.openFromHash();
 }
 

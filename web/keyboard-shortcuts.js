@@ -1,6 +1,6 @@
 // The page's own shortcuts (web/ui/help-overlay.js lists them): they act only when the
 // focus is not in a text field, so typing an expression never fits the view or opens help.
-// Undo and redo live with the history (web/history-wiring.js); orbit and zoom keys with
+// Undo and redo live with the history (web/features/history.js); orbit and zoom keys with
 // the view (web/viewer/camera-rig.js).
 
 /** Whether key presses at `target` belong to a field that takes text. */

@@ -10,7 +10,7 @@ import { createStatus } from './ui/status.js';
 import { loadExamplesAhead } from './state/examples.js';
 import { readHash } from './state/hash.js';
 import { installTestHooks } from './test-hooks.js';
-import { createBezierWiring } from './bezier-wiring.js';
+import { createBezierFeature } from './features/bezier.js';
 import { showSolvedAhead } from './first-surface.js';
 
 // How long the page waits, once its view exists, for the first surface the worker solves
@@ -21,7 +21,7 @@ const status = createStatus(document.getElementById('status'));
 const titleEl = document.getElementById('scene-title');
 let viewer = null;
 let analysis = null;
-const bezier = createBezierWiring();
+const bezier = createBezierFeature();
 const hooks = installTestHooks(() => (viewer ? viewer.positionArrays() : []), () => viewer?.getCamera() ?? null, {
   overlays: () => viewer?.overlayCounts() ?? null,
   editing: () => viewer?.editor.active() ?? null,

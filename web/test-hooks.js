@@ -29,10 +29,10 @@ export function installTestHooks(getPositionArrays, getCamera = () => null, extr
     exampleId: null, // null while a scene from a shared link is open
     notice: null, // the last notice shown instead of a solve summary (bad link, unknown example)
     lastLink: null, // the URL the last "copy link" produced
-    // the last export or opened file: { action, name, bytes?, ms?, error? } (web/file-wiring.js);
+    // the last export or opened file: { action, name, bytes?, ms?, error? } (web/features/files.js);
     // a CAD export (step, iges, 3dm) adds { tolerance, fitMs, faces: [{ name, deviation, ... }] }
     lastFile: null,
-    history: () => null, // { canUndo, canRedo, depth, redoDepth }, set by web/history-wiring.js
+    history: () => null, // { canUndo, canRedo, depth, redoDepth }, set by web/features/history.js
     checksum: () => checksumOf(getPositionArrays()),
     vertexCount: () => getPositionArrays().reduce((n, a) => n + a.length / 3, 0),
     camera: () => getCamera(), // { position, target } as a link stores it

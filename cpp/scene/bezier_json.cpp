@@ -7,6 +7,7 @@
 #include "common/text.hpp"
 #include "common/limits.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/patch_parsers.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {

@@ -5,13 +5,12 @@
 #include "common/limits.hpp"
 #include "scene/ends_json.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/patch_parsers.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {
 
 using namespace scene_json;
-
-void parsePdePatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch);
 
 namespace {
 

@@ -6,6 +6,7 @@
 #include "scene/ends_json.hpp"
 #include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/patch_parsers.hpp"
 #include "scene/scene.hpp"
 
 namespace pdesurf {

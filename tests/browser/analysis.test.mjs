@@ -1,4 +1,4 @@
-// Surface-quality analysis in the page (web/analysis-wiring.js), at 1280×800 and at
+// Surface-quality analysis in the page (web/features/analysis.js), at 1280×800 and at
 // phone size 390×844, on seed 000 Fig. 4a (a cylinder blended into a plane):
 // normal shading, zebra stripes, mean and Gaussian curvature maps with their legend, the
 // wireframe overlay and the joins folder with a highlighted join. Screenshots go to

@@ -1,4 +1,4 @@
-// Building a model from nothing in the page (web/build-wiring.js): a new empty scene, surfaces
+// Building a model from nothing in the page (web/features/build.js): a new empty scene, surfaces
 // from the library, placed, blended by picking two borders in the view (1280×800) or by the
 // panel's choices only (390×844), undone back to empty and redone; the link decodes in the
 // CLI to that scene and `pdesurf check` passes; a sphere filleted into a plane follows a

@@ -1,5 +1,5 @@
 // The File folder's CAD exports in the production page (/app/: build/web or $PDESURF_APP_DIR;
-// web/file-wiring.js, web/export/cad-export.js, the solver worker's exportCad): nothing of
+// web/features/files.js, web/export/cad-export.js, the solver worker's exportCad): nothing of
 // them (nor of rhino3dm) is fetched at load; STEP and IGES of you2004-fig4a read back in Open
 // CASCADE within the fit's tolerance of the native CLI's own samples (occt_readback), the
 // .3dm reads back in rhino3dm under node (one valid Brep of the 3 faces, pointAt within the tolerance of

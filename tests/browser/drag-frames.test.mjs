@@ -1,4 +1,4 @@
-// Frames while a drag re-solves (web/build-wiring.js): dragging a sphere with the placement
+// Frames while a drag re-solves (web/features/build.js): dragging a sphere with the placement
 // gizmo re-solves the fillet to the plane as it goes, and the page keeps painting as it does
 // when it only orbits; the drag is one undo step and the joins stay G1. These figures compare
 // frame gaps with a baseline taken in the same page, so scripts/test runs this file alone,

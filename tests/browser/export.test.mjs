@@ -1,4 +1,4 @@
-// Exports from the page's "File" folder (web/file-wiring.js, web/export/): each download is
+// Exports from the page's "File" folder (web/features/files.js, web/export/): each download is
 // caught and read back. The meshes are the model's watertight one (the worker's modelMesh),
 // the CLI's own at the page's grid: OBJ one "o" per body, the CLI's vertices and faces;
 // binary STL the CLI's triangles, 84 + 50 bytes each; GLB parsed by three's GLTFLoader in the

@@ -1,4 +1,4 @@
-// Dragging a surface with the page's placement gizmo (web/build-wiring.js), for the build
+// Dragging a surface with the page's placement gizmo (web/features/build.js), for the build
 // test and scripts/bench-page.mjs: select the surface in the outliner, turn the gizmo on
 // (move), find its x arrow on screen and drag it in `steps` pointer moves, one per frame,
 // counting frames (requestAnimationFrame), the longest gap between them, long tasks and the

@@ -1,4 +1,4 @@
-// Undo and redo of openings (web/history-wiring.js): a file and a link are steps and come
+// Undo and redo of openings (web/features/history.js): a file and a link are steps and come
 // back in the view they were left with; an opening that never draws (a file or a link whose
 // scene fails) leaves no step; a Bézier patch's λ, γ, region weights and control-point drag
 // are one step each. The changes within a blend: history.test.mjs.

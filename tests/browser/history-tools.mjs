@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { hooks, solvedAfter, sameChecksum } from './harness.mjs';
 import { decodeFragment } from '../../web/link/link-codec.js';
-import { REST_MS } from '../../web/history-wiring.js';
+import { REST_MS } from '../../web/features/history.js';
 
 export const hashOf = (page) => new URL(page.url()).hash;
 // Cameras put back through the controls (viewer.setCamera) are equal to rounding.

@@ -1,4 +1,4 @@
-// Undo and redo in the page (web/history-wiring.js): every kind of scene change is ONE step
+// Undo and redo in the page (web/features/history.js): every kind of scene change is ONE step
 // however many solves it causes (a slider drag or its arrow keys, a typed value, an
 // expression, an order, a method, the grid, a control-point drag, λ, γ, region weights,
 // adding and removing a parameter, opening an example); undo brings back the surface
@@ -13,7 +13,7 @@ import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { skip, startHarness, hooks, shoot, sameChecksum, OUT_DIR } from './harness.mjs';
-import { REST_MS } from '../../web/history-wiring.js';
+import { REST_MS } from '../../web/features/history.js';
 import { sameCamera, linkWhere, pageTools } from './history-tools.mjs';
 
 const SLOT = 'patches[0].boundary.x.u0[1]'; // you2004-fig2a: "r0p*cos(v)"

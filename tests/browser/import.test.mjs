@@ -1,4 +1,4 @@
-// Opening a scene file (web/file-wiring.js, web/import/): by the picker (the hidden input
+// Opening a scene file (web/features/files.js, web/import/): by the picker (the hidden input
 // data-file="input") and by dropping it on the page (a DataTransfer built in the page). A good
 // file opens like an example or a link (its title, no example id, the link in the hash once
 // solved); the page's own export opens back to the same surfaces. Every bad file (not JSON,

@@ -77,7 +77,7 @@ test('every edit comes from the catalogue: each factory\'s type is declared, eac
   const doc = createDocument({ scene: { patches: [] } });
   assert.throws(() => doc.apply({ name: 'change a parameter', run: () => {} }), /an edit of unknown type undefined/);
   assert.throws(() => doc.apply({ type: 'teleport', name: 'x', run: () => {} }), /unknown type "teleport"/);
-  // No wiring writes an edit by hand: every door call takes a factory's edit.
+  // No feature writes an edit by hand: every door call takes a factory's edit.
   for (const file of sources(web)) {
     const text = readFileSync(file, 'utf8');
     assert.ok(!/\.apply\(\{/.test(text), `${file} hands the door an edit it made itself`);

@@ -11,7 +11,7 @@ import { DEFAULT_GRID } from '../state/scene-state.js';
 import { sameSolve } from './same-solve.js';
 
 // What scene-session.js sends when an example opens: the default grid, flat shading (no
-// curvature), the join report, no crossing test (analysis-wiring.js solveOptions).
+// curvature), the join report, no crossing test (features/analysis.js solveOptions).
 export const OPENING_OPTIONS = Object.freeze({ ...DEFAULT_GRID, curvature: false, joins: true, crossings: false });
 
 /**

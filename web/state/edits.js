@@ -28,6 +28,6 @@ export const edits = Object.freeze({
   attachEnd: (patch, end) => ({ type: 'attach-end', name: 'attach the end', run: (s) => s.attachEnd(patch, end), ends: true }),
   detachEnd: (patch, end, derived) => ({ type: 'detach-end', name: 'detach the end', run: (s) => s.detachEnd(patch, end, derived), ends: true }),
   setExpression: (patch, field, text) => ({ type: 'expression', name: 'change the expression', run: (s) => s.setExpression(patch, field, text), solve: 'typed' }),
-  // A Bézier patch's initial control net: write(state) changes it (bezier-wiring.js).
+  // A Bézier patch's initial control net: write(state) changes it (features/bezier.js).
   controlNet: (write) => ({ type: 'control-net', name: 'edit the control net', run: write }),
 });

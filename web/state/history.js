@@ -2,7 +2,7 @@
 // A snapshot is { sceneText (the scene's JSON), grid: { nu, nv }, exampleId, title }; the
 // first one pushed is the base (nothing to undo past it). Pushing after undos cuts off the
 // redo branch; pushing a snapshot equal to the current one is no step. No DOM: the page's
-// side is web/history-wiring.js.
+// side is web/features/history.js.
 
 export const DEFAULT_CAPACITY = 200; // undoable steps kept; the oldest go first
 

@@ -1,6 +1,6 @@
 // The panel's "Build" folder: a new scene, the Add menu (the surface library), a blend
 // between two borders and a fill of a loop of four — each as choices (keyboard and touch)
-// or picked in the view. It only reports what the user asked; web/build-wiring.js makes the
+// or picked in the view. It only reports what the user asked; web/features/build.js makes the
 // edits through the document's door. Every text shown comes from the scene or the solver
 // and is set as text, never as markup.
 import { SURFACE_LIBRARY } from '../state/surface-library.js';

@@ -2,7 +2,7 @@
 // visibility, selection, duplicate and delete; deleting a surface a blend or a fill names
 // asks what to do with them; parameters no expression uses can be removed. Names are set
 // as text (a name with markup shows its characters). It reports what the user asked;
-// web/build-wiring.js makes the edits through the document's door.
+// web/features/build.js makes the edits through the document's door.
 
 import { conditionSources } from '../state/patch-references.js';
 import { kindInfo } from '../state/patch-kinds.js';

@@ -1,6 +1,6 @@
 // A click (or a tap) on a drawn patch names it; on the background, null. A press that
 // travels (an orbit) or that another tool takes (the gizmo, the border picker, the
-// control-point editor: `busy`) is no click. The page selects with it (web/build-wiring.js).
+// control-point editor: `busy`) is no click. The page selects with it (web/features/build.js).
 import * as THREE from 'three';
 
 const CLICK_SLOP = 5; // CSS pixels a click may travel

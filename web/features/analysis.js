@@ -7,18 +7,20 @@
 // certifies after ('certified'): meanwhile the folder keeps the last report and says
 // "checking…". An older module without them still draws: the legend
 // and the joins folder say what is missing.
-import { buildAnalysisFolder, defaultAnalysisSettings } from './ui/analysis-controls.js';
-import { buildJoinsFolder } from './ui/joins-panel.js';
-import { createCurvatureLegend } from './ui/curvature-legend.js';
-import { curvatureScale } from './state/curvature-scale.js';
-import { highlightedKeys, joinKey } from './state/join-report.js';
+import { buildAnalysisFolder, defaultAnalysisSettings } from '../ui/analysis-controls.js';
+import { buildJoinsFolder } from '../ui/joins-panel.js';
+import { createCurvatureLegend } from '../ui/curvature-legend.js';
+import { curvatureScale } from '../state/curvature-scale.js';
+import { highlightedKeys, joinKey } from '../state/join-report.js';
 
 const CURVATURE_KEY = { mean: 'meanCurvature', gauss: 'gaussCurvature' };
 const OLD_MODULE = 'this solver module computes no curvature; rebuild it (scripts/build-wasm)';
 const NO_REPORT = 'this solver module gives no join report; rebuild it (scripts/build-wasm)';
 
-/** { panel, viewer, hasAnalysis (the solver has solveSceneWith), requestSolve() } */
-export function createAnalysisWiring({ doc, panel, viewer, hasAnalysis, requestSolve }) {
+/** The context's { doc, panel, viewer, session (its requestQuiet re-solves for a new analysis) } */
+export function createAnalysisFeature({ doc, panel, viewer, session }) {
+  const hasAnalysis = true; // the module has solveSceneWith (an older one: the folders say what is missing)
+  const requestSolve = () => session.requestQuiet();
   const settings = defaultAnalysisSettings();
   const controls = buildAnalysisFolder(panel.gui, settings, onChange);
   const joins = buildJoinsFolder(panel.gui, onToggle, onJoinsOpen);

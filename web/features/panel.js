@@ -1,17 +1,18 @@
 // The control panel, its every handler an edit through the document's door
 // (web/state/document.js): the door re-solves, records the undo step and updates the link.
-import { createPanel } from './ui/panel.js';
-import { edits } from './state/edits.js';
+import { createPanel } from '../ui/panel.js';
+import { edits } from '../state/edits.js';
 
-/** { doc, share, bezier } -> the panel (web/ui/panel.js). */
-export function createPanelWiring({ doc, share, bezier }) {
+/** The context's { doc, bezier } (its share is read when the link is copied) -> the panel (web/ui/panel.js). */
+export function createPanelFeature(ctx) {
+  const { doc, bezier } = ctx;
   const { state } = doc;
   const apply = (edit) => doc.apply(edit).ok;
 
   const panel = createPanel({
     grid: state.grid,
     onGridChange: (grid) => apply(edits.setGrid(grid)),
-    onShare: () => share().copy(),
+    onShare: () => ctx.share.copy(),
     parameterHandlers: {
       onChange: (name, value) => apply(edits.setParameter(name, value)),
       onAdd: (name, value) => apply(edits.addParameter(name, value)),

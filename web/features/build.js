@@ -3,25 +3,26 @@
 // and picking borders in the view. Every change is one edit through the document's door
 // (web/state/document.js), which re-solves, records the undo step and updates the link;
 // this module only subscribes to the door and turns the user's asks into edits.
-import { buildBuildFolder } from './ui/build-controls.js';
-import { buildOutliner } from './ui/outliner.js';
-import { buildPlacementFolder } from './ui/placement-controls.js';
-import { libraryEntry } from './state/surface-library.js';
-import { bordersOfPatch } from './state/scene-join.js';
-import { newScene, dependentsOf, unusedParameters } from './state/scene-build.js';
-import { previewMesh, pivotOf } from './viewer/placement-gizmo.js';
-import { placementValues } from './state/placement.js';
-import { edits } from './state/edits.js';
-import { buildEdits } from './state/build-edits.js';
-import { messageOf } from './state/document.js';
-import { bodyText } from './state/join-report.js';
-import { kindInfo, isSurfaceKind } from './state/patch-kinds.js';
+import { buildBuildFolder } from '../ui/build-controls.js';
+import { buildOutliner } from '../ui/outliner.js';
+import { buildPlacementFolder } from '../ui/placement-controls.js';
+import { libraryEntry } from '../state/surface-library.js';
+import { bordersOfPatch } from '../state/scene-join.js';
+import { newScene, dependentsOf, unusedParameters } from '../state/scene-build.js';
+import { previewMesh, pivotOf } from '../viewer/placement-gizmo.js';
+import { placementValues } from '../state/placement.js';
+import { edits } from '../state/edits.js';
+import { buildEdits } from '../state/build-edits.js';
+import { messageOf } from '../state/document.js';
+import { bodyText } from '../state/join-report.js';
+import { kindInfo, isSurfaceKind } from '../state/patch-kinds.js';
 
 // The patches a placement can move.
 const surfacesOf = (scene) => (scene?.patches || []).filter((p) => p && kindInfo(p.kind).placeable);
 
-/** { doc, panel, viewer, hooks, openBuilt(scene, title) } */
-export function createBuildWiring({ doc, panel, viewer, hooks, openBuilt }) {
+/** The context's { doc, panel, viewer, hooks, session (openBuilt(scene, title) opens a new scene) } */
+export function createBuildFeature({ doc, panel, viewer, hooks, session }) {
+  const openBuilt = (scene, title) => session.openBuilt(scene, title);
   const { state } = doc;
   let drawn = []; // the last good solve's patches
   let pickMode = null; // 'blend' | 'fill' | null

@@ -4,34 +4,36 @@
 // that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
 // surfaces, the panel, the example id and the URL hash. For the second case the scene shown
 // before is remembered and shown again (with its camera) when the file's first solve fails.
-import { buildFileFolder } from './ui/file-controls.js';
-import { createFilePicker } from './import/file-picker.js';
-import { installFileDrop } from './import/file-drop.js';
-import { downloadFile } from './export/download.js';
-import { exportBaseName, pngFileName } from './export/file-names.js';
-import { messageOf } from './state/document.js';
+import { buildFileFolder } from '../ui/file-controls.js';
+import { createFilePicker } from '../import/file-picker.js';
+import { installFileDrop } from '../import/file-drop.js';
+import { downloadFile } from '../export/download.js';
+import { exportBaseName, pngFileName } from '../export/file-names.js';
+import { messageOf } from '../state/document.js';
 
 // What runs only once a file is opened or exported loads then (the cold start stays as it was).
-const meshExport = () => import('./export/mesh-export.js');
-const pngExport = () => import('./export/png-export.js');
-const sceneExport = () => import('./export/scene-export.js');
-const cadExport = () => import('./export/cad-export.js');
+const meshExport = () => import('../export/mesh-export.js');
+const pngExport = () => import('../export/png-export.js');
+const sceneExport = () => import('../export/scene-export.js');
+const cadExport = () => import('../export/cad-export.js');
 const CAD_LABELS = { step: 'STEP', iges: 'IGES', '3dm': '3dm' };
-const sceneFile = () => import('./import/scene-file.js');
+const sceneFile = () => import('../import/scene-file.js');
 
 const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 const sizeText = (bytes) => (bytes < 1024 ? `${bytes} bytes` : bytes < 1 << 20 ? `${(bytes / 1024).toFixed(0)} KiB` : `${(bytes / (1 << 20)).toFixed(1)} MiB`);
 
 /**
- * { panel, viewer, state, status, hooks, solver (solver/solver-client.js: CAD exports run in
- *   its worker), showScene(scene, opts) -> token (main.js),
- *   currentTitle() -> the title line's text, setNotice(text) (shown instead of the next
- *   solve's summary) }.
+ * The context's { panel, viewer, state, status, hooks, solver (solver/solver-client.js: CAD
+ *   exports run in its worker), session (showScene(scene, opts) -> token; setNotice(text),
+ *   shown instead of the next solve's summary), titleEl (the title line) }.
  * Returns { solved(job) -> true for the first good solve of an opened file (its scene is
  * then linked in the hash like an edit), failed(err, job) -> true when the failure was an
  * opened file's (handled here) }.
  */
-export function createFileWiring({ panel, viewer, state, status, hooks, solver, showScene, currentTitle, setNotice }) {
+export function createFilesFeature({ panel, viewer, state, status, hooks, solver, session, titleEl }) {
+  const showScene = (scene, opts) => session.showScene(scene, opts);
+  const setNotice = (text) => session.setNotice(text);
+  const currentTitle = () => titleEl.textContent;
   let pending = null; // { token, name, previous }: an opened file's scene waiting for its first solve
   let busy = false; // one export at a time
 

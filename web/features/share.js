@@ -2,13 +2,13 @@
 // keeps its short "#example=<id>" until the user changes something; from then on every
 // good solve and every resting camera move rewrites the hash (web/state/hash-sync.js),
 // and the link length (with the long-link warning) follows live.
-import { createHashSync } from './state/hash-sync.js';
-import { copyLink, shareMessage, longLinkWarning } from './state/share-link.js';
+import { createHashSync } from '../state/hash-sync.js';
+import { copyLink, shareMessage, longLinkWarning } from '../state/share-link.js';
 
 const messageOf = (err) => (err && err.message ? err.message : String(err));
 
-/** { viewer, panel, status, hooks } -> { opening(), solved(text, grid, summary, edited), copy() } */
-export function createShareWiring({ viewer, panel, status, hooks }) {
+/** The context's { viewer, panel, status, hooks } -> { opening(), solved(text, grid, summary, edited), copy() } */
+export function createShareFeature({ viewer, panel, status, hooks }) {
   let good = null; // the last scene that solved, as solver text, and its grid
   let summary = ''; // that solve's status line
   let long = false; // whether the address bar's link is over LONG_LINK

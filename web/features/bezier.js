@@ -2,14 +2,14 @@
 // control-point editor both write the scene through the page state, re-solve, and keep
 // each other in step (a point picked in the view shows in the panel; a number typed in
 // the panel moves the marker). One patch's initial net is edited at a time.
-import { AXES, controlPointEntry } from './state/control-net-edit.js';
-import { edits } from './state/edits.js';
+import { AXES, controlPointEntry } from '../state/control-net-edit.js';
+import { edits } from '../state/edits.js';
 
 /**
- * Created before the viewer and the panel (they take its handlers); connect() them
- * once they exist: { state, viewer, panel, doc, status }.
+ * Created before the viewer and the panel (they take its handlers); connect(ctx) them
+ * once they exist, with the editor's context (editor.js: its state, viewer, panel, doc).
  */
-export function createBezierWiring() {
+export function createBezierFeature() {
   let ctx = null;
   let solved = new Map(); // patch name -> its last solved result (resolved numbers)
   let editing = null; // the patch whose "pick & drag" is on

@@ -6,8 +6,8 @@
 // step at once (one that never draws gives its place to the next); the first scene opened is
 // the base. Ctrl/Cmd+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo, except in a text field or a
 // select (their own undo stays); two toolbar buttons do the same.
-import { createHistory } from './state/history.js';
-import { isTextField } from './keyboard-shortcuts.js';
+import { createHistory } from '../state/history.js';
+import { isTextField } from '../keyboard-shortcuts.js';
 
 export const REST_MS = 400;
 
@@ -17,12 +17,16 @@ const typing = () => isTextField(document.activeElement) && document.activeEleme
 const MAC = typeof navigator !== 'undefined' && /Mac|iPhone|iPad/.test(navigator.platform || '');
 
 /**
- * read() -> the page state as a snapshot { sceneText, grid, exampleId, title };
- * restore(snapshot, camera) puts one back (and re-solves; that solve's touched() is no step
- * since it equals the current one); camera is the view that step was left with, or null;
- * camera() -> the view now; hooks: window.__pdesurf (gets history()).
+ * The context's { state, session, viewer, hooks, titleEl }: a step is the page state as a
+ * snapshot { sceneText, grid, exampleId, title }; session.restoreScene(snapshot, camera) puts
+ * one back (and re-solves; that solve's touched() is no step since it equals the current
+ * one); camera is the view that step was left with, or null; hooks: window.__pdesurf (gets
+ * history()).
  */
-export function createHistoryWiring({ read, restore, camera, hooks }) {
+export function createHistoryFeature({ state, session, viewer, hooks, titleEl }) {
+  const read = () => ({ sceneText: state.text(), grid: { ...state.grid }, exampleId: state.exampleId, title: titleEl.textContent });
+  const restore = (snapshot, view) => session.restoreScene(snapshot, view);
+  const camera = () => viewer.getCamera();
   const history = createHistory();
   // The view each step was left with: a step of another scene comes back framed as it was left.
   const cameras = new WeakMap();
