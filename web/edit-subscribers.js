@@ -1,7 +1,7 @@
 // What every edit through the document's door (web/state/document.js) sets off, in one
 // place: the re-solve (at once, or once typing pauses), the panel's folders when the scene
 // changed shape, and the message of a refused edit. The undo step and the link follow the
-// solve (web/main.js: solveNow and applyResult).
+// solve (web/scene-session.js: solveNow and applyResult).
 import { messageOf } from './state/document.js';
 
 export const EXPRESSION_DEBOUNCE_MS = 150; // typing re-solves once the keys pause

@@ -15,7 +15,7 @@ export function checksumOf(arrays) {
   return total;
 }
 
-/** extras: further read-only functions (the bezier overlays and editor, from main.js). */
+/** extras: further read-only functions (the bezier overlays and editor, given by main.js). */
 export function installTestHooks(getPositionArrays, getCamera = () => null, extras = {}) {
   const hooks = {
     ready: false, // true once the first result is handled (after its frame: the panel built)

@@ -2,7 +2,7 @@
 // surface, picking two borders, moving a surface, deleting) and of the selection goes through
 // apply() or select(). The door runs the edit, puts the scene back if it throws, and signals
 // the result; the solve scheduler, the undo history, the link, the panel and the outliner
-// subscribe (web/main.js composes them) instead of each handler calling them on its own.
+// subscribe (web/editor.js composes them) instead of each handler calling them on its own.
 //
 // An edit (made by a factory of web/state/edits.js): {
 //   type:      what kind of edit it is (EDIT_TYPES; code branches on it)
@@ -95,7 +95,7 @@ export function createDocument(state) {
       return { ok: true, result };
     },
 
-    /** The solver's verdict on the scene as it now is (main.js calls it after every solve). */
+    /** The solver's verdict on the scene as it now is (scene-session.js calls it after every solve). */
     solved(ok, error) {
       const check = pendingCheck;
       pendingCheck = null;
