@@ -23,14 +23,14 @@ test('a bezier patch brings its nets, normal arrows and numbers through the wrap
   const hat = solveHat(open('wu2015-fig2'));
   assert.deepEqual(hat.netSize, [8, 8]);
   for (const key of ['controlNet', 'initialNet']) {
-    assert.ok(hat[key] instanceof Float32Array && hat[key].length === 3 * 64, key);
+    assert.ok(hat[key] instanceof Float64Array && hat[key].length === 3 * 64, key);
   }
   assert.equal(hat.normalOrigins.length, 3 * 17 * 17); // one arrow per sample of the 16×16 grid
   assert.equal(hat.normalVectors.length, hat.normalOrigins.length);
   assert.equal(hat.lambda, 10);
   assert.equal(hat.gamma, 0);
   assert.ok(hat.energy > 0 && hat.normalMisfit > 0);
-  // The fixed ring is S's ring, bit for bit (as float32).
+  // The fixed ring is S's ring, bit for bit.
   for (const k of [0, 7, 56, 63]) {
     assert.deepEqual(Array.from(hat.controlNet.slice(3 * k, 3 * k + 3)), Array.from(hat.initialNet.slice(3 * k, 3 * k + 3)));
   }

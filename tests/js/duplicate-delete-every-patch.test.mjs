@@ -1,7 +1,9 @@
 // Duplicating or deleting any patch of any example through the page's edits (issue 39:
 // web/state/scene-build.js duplicatePatch, web/state/patch-delete.js deletePatch): each result
 // is a model the module solves, or a refusal by name before the core is asked; the patches the
-// edit does not touch keep their points, and nothing names a patch that is gone.
+// edit does not touch keep their points, nothing names a patch that is gone, and a model whose
+// joins were certified still certifies (a detached fill's rings are typed from the solved net in
+// doubles: rounded to float32 digits, its corners missed the borders still by reference).
 //   PDESURF_BUILD_DIR=build node --test tests/js/duplicate-delete-every-patch.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -17,6 +19,14 @@ const examples = readdirSync(new URL('examples/', root)).filter((f) => f.endsWit
 const options = { nu: 4, nv: 4 };
 const read = (file) => readFileSync(new URL(`examples/${file}`, root), 'utf8');
 const byName = (patches) => new Map(patches.map((p) => [p.name, [...p.positions]]));
+const certified = (scene) => solver.solve(scene, { ...options, joins: true }).report;
+function checkJoins(scene, wasOk, what) {
+  if (!wasOk) return 0;
+  const report = certified(scene);
+  const failing = [...report.joins, ...report.seams].filter((j) => !j.ok).map((j) => `${j.patch}:${j.end} - ${j.surface}:${j.edge}`);
+  assert.ok(report.ok, `${what}: the joins no longer certify (${failing.join('; ') || report.error?.message || 'centres or crossings'})`);
+  return 1;
+}
 
 function solveOrFail(scene, what) {
   try {
@@ -27,10 +37,11 @@ function solveOrFail(scene, what) {
 }
 
 test('every patch of every example duplicated: solved with the copy where the original is, or refused by name', () => {
-  let copies = 0, refused = 0;
+  let copies = 0, refused = 0, reports = 0;
   for (const file of examples) {
     const text = read(file);
     const before = byName(solver.solve(JSON.parse(text), options).patches);
+    const wasOk = certified(JSON.parse(text)).ok;
     for (const { name } of JSON.parse(text).patches) {
       const scene = JSON.parse(text);
       let copy;
@@ -46,17 +57,20 @@ test('every patch of every example duplicated: solved with the copy where the or
       assert.equal(after.size, before.size + 1, `${file}: ${name}`);
       for (const [n, points] of before) assert.deepEqual(after.get(n), points, `${file}: ${n} moved when ${name} was duplicated`);
       assert.deepEqual(after.get(copy), before.get(name), `${file}: the copy of ${name} is not where it is`);
+      reports += checkJoins(scene, wasOk, `${file}: duplicating ${name}`);
       copies++;
     }
   }
   assert.ok(copies > 100, `${copies} copies, ${refused} refused`);
+  assert.ok(reports > 50, `${reports} reports`);
 });
 
 test('every patch of every example deleted with its dependents, and with them detached: the rest solves, unmoved', () => {
-  let deletes = 0, detaches = 0, notDetachable = 0;
+  let deletes = 0, detaches = 0, notDetachable = 0, reports = 0;
   for (const file of examples) {
     const text = read(file);
     const solved = solver.solve(JSON.parse(text), options).patches;
+    const wasOk = certified(JSON.parse(text)).ok;
     const before = byName(solved);
     for (const { name } of JSON.parse(text).patches) {
       for (const dependents of ['delete', 'detach']) {
@@ -85,11 +99,13 @@ test('every patch of every example deleted with its dependents, and with them de
           const scale = Math.max(1, ...was.map(Math.abs));
           assert.ok(worst <= 1e-5 * scale, `${file}: ${n} moved by ${worst} when ${name} was deleted (${dependents})`);
         }
+        reports += checkJoins(scene, wasOk, `${file}: deleting ${name} (${dependents})`);
         if (dependents === 'delete') deletes++;
         else detaches++;
       }
     }
   }
   assert.ok(deletes > 120, `${deletes} deletes`);
+  assert.ok(reports > 50, `${reports} reports`);
   assert.ok(detaches > 10, `${detaches} detaches, ${notDetachable} refused`);
 });

@@ -176,7 +176,7 @@ describe('delete', () => {
 
   it('"detach" types a fill\'s border rings into its net from the solved net', () => {
     const n = 3, m = 2;
-    const net = new Float32Array(3 * (n + 1) * (m + 1)).map((_, k) => k / 10);
+    const net = new Float64Array(3 * (n + 1) * (m + 1)).map((_, k) => k / 10); // the module's nets are doubles
     const solved = [{ name: 'fill1', kind: 'bezier', netSize: [n + 1, m + 1], controlNet: net }];
     const scene = { version: 4, parameters: {}, patches: [{ name: 's', kind: 'surface' }, {
       name: 'fill1', kind: 'bezier', energy: 'membrane', degree: [n, m],
@@ -187,7 +187,7 @@ describe('delete', () => {
     const fill = whole.patches[0];
     assert.equal(fill.borders, undefined);
     assert.equal(fill.control_net.length, (n + 1) * (m + 1));
-    assert.deepEqual(fill.control_net[5], [1.5, 1.6, 1.7].map((x) => Number(Math.fround(x).toPrecision(7))));
+    assert.deepEqual(fill.control_net[5], [15 / 10, 16 / 10, 17 / 10]); // exactly the solved net's numbers
     // With a net already there, only the fixed ring of the detached edge changes.
     const typed = structuredClone(scene);
     typed.patches[1].control_net = Array.from({ length: (n + 1) * (m + 1) }, () => [9, 9, 9]);

@@ -250,8 +250,9 @@ function normalisePatch(p) {
     // guiding normals as arrows on the solved surface, and the solve's numbers.
     out.netSize = Array.from(p.netSize || [], Number);
     if (out.netSize.length !== 2) throw new PdesurfError('Internal', `patch ${p.name}: netSize is not [rows, cols]`);
-    out.controlNet = typed(p.controlNet, Float32Array, 'controlNet');
-    out.initialNet = typed(p.initialNet, Float32Array, 'initialNet');
+    // The nets in doubles (a detached border is typed from them exactly); drawn as float32.
+    out.controlNet = typed(p.controlNet, Float64Array, 'controlNet');
+    out.initialNet = typed(p.initialNet, Float64Array, 'initialNet');
     out.normalOrigins = typed(p.normalOrigins, Float32Array, 'normalOrigins');
     out.normalVectors = typed(p.normalVectors, Float32Array, 'normalVectors');
     for (const key of ['energy', 'normalMisfit', 'lambda', 'gamma']) out[key] = Number(p[key]);

@@ -43,7 +43,6 @@ export function downstreamOf(scene, name) {
 }
 
 const solvedPatch = (solved, name) => (Array.isArray(solved) ? solved.find((p) => p && p.name === name) : solved?.[name]);
-const round7 = (x) => Number(Number(x).toPrecision(7)); // the solved net is float32: 7 digits are all it has
 
 /** The blend `patch` with `ends` detached, as a new object (the scene is not touched). */
 function detachedBlend(patch, ends, solved) {
@@ -74,7 +73,9 @@ function detachedFill(patch, edges, solved) {
   if (!net || !Array.isArray(s.netSize) || s.netSize[0] !== n + 1 || s.netSize[1] !== m + 1 || net.length !== 3 * (n + 1) * (m + 1)) {
     throw new Error(`${patch.name}.borders: no solved control net of degree ${JSON.stringify(patch.degree)} to detach with (solve the scene first)`);
   }
-  const point = (i, j) => [0, 1, 2].map((c) => round7(net[3 * (i * (m + 1) + j) + c]));
+  // The solved net in doubles: the detached rings are exactly what was solved, so the borders
+  // still by reference meet them at the corners as before.
+  const point = (i, j) => [0, 1, 2].map((c) => net[3 * (i * (m + 1) + j) + c]);
   const copy = structuredClone(patch);
   if (!Array.isArray(copy.control_net)) {
     copy.control_net = [];

@@ -12,7 +12,7 @@ const POINT_SIZE = 6; // pixels: nets stay readable however far the camera is
 /** A net as a Group of LineSegments (the grid) and Points; userData.points is the Points. */
 export function netObject(net, rows, cols, color, kind) {
   const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.BufferAttribute(net, 3));
+  geometry.setAttribute('position', new THREE.Float32BufferAttribute(net, 3)); // WebGL takes no doubles
   geometry.setIndex(gridIndices(rows, cols));
   geometry.computeBoundingSphere();
   const lines = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color }));
