@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
       std::printf("%-22s %10.1f\n", e["id"].get<std::string>().c_str(), both * 1e6);
       continue;
     }
-    const PdeProblem& p = scene.firstPde()->pde;
+    const PdeProblem& p = scene.firstPde()->pde();
     const auto applicable = applicableMethods(p);
     std::printf("%-22s %10.1f", e["id"].get<std::string>().c_str(), both * 1e6);
     {  // "warm": the closed form with its ODE bases kept, as the page keeps them between solves

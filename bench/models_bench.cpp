@@ -38,18 +38,18 @@ void benchFills(const std::string& dir, const char* file) {
   volatile size_t sink = 0;
   std::printf("\nfills of %s [us, median]\n%-12s %10s %10s %10s %10s %12s\n", file, "fill", "derive", "solve", "check", "total", "draw 64x64");
   for (const SolvedPatch& sp : solved) {
-    if (!sp.patch->fill.given) continue;
+    if (!sp.patch->isFill()) continue;
     const Patch& fill = *sp.patch;
     const double derive = benchMedianSeconds([&] { sink = derivedProblem(fill, lookup)->component[0].left.size(); });
     const auto problem = derivedProblem(fill, lookup);
-    const double solve = benchMedianSeconds([&] { sink = solveWithMethod(*problem, fill.method).surface.component[0].size(); });
-    const SeparableSurface surface = solveWithMethod(*problem, fill.method).surface;
+    const double solve = benchMedianSeconds([&] { sink = solveWithMethod(*problem, fill.method()).surface.component[0].size(); });
+    const SeparableSurface surface = solveWithMethod(*problem, fill.method()).surface;
     const double check = benchMedianSeconds([&] { checkFillRegular(fill, surface), sink = 1; });
     // The whole path from nothing, as one: the parts above reuse what a first run compiled (a
     // general function's programs), the page's solve does not.
     const double total = benchMedianSeconds([&] {
       const auto fresh = derivedProblem(fill, lookup);
-      const SeparableSurface s = solveWithMethod(*fresh, fill.method).surface;
+      const SeparableSurface s = solveWithMethod(*fresh, fill.method()).surface;
       checkFillRegular(fill, s);
       sink = s.component[0].size();
     });
@@ -76,9 +76,9 @@ void benchModels(const std::string& dir) {
   double sumSolve = 0, sumDraw = 0;
   for (const SolvedPatch& sp : solved) {
     double solve = 0;
-    if (sp.patch->kind == PatchKind::Pde) {
+    if (sp.patch->solvedAsPde()) {
       const PdeProblem& p = sp.pde();
-      solve = benchMedianSeconds([&] { sink = solveWithMethod(p, sp.patch->method).surface.component[0].size(); });
+      solve = benchMedianSeconds([&] { sink = solveWithMethod(p, sp.patch->method()).surface.component[0].size(); });
     }
     const double draw = benchMedianSeconds([&] { sink = tessellate(sp.surface, 64, 64).vertexCount(); });
     sumSolve += solve, sumDraw += draw;
@@ -101,7 +101,7 @@ void benchModels(const std::string& dir) {
     const Scene s = parseScene(flip ? b : a);
     resolved = 0;
     for (const SolvedPatch& sp : solveScene(s, &cache))
-      if (!sp.reused && sp.patch->kind == PatchKind::Pde) ++resolved, sink = tessellate(sp.surface, 64, 64).vertexCount();
+      if (!sp.reused && sp.patch->solvedAsPde()) ++resolved, sink = tessellate(sp.surface, 64, 64).vertexCount();
   });
   std::printf("whole model, parse + solve + draw 64x64, cold: %.1f us\n", whole * 1e6);
   benchFills(dir, "you2004-fig8c.json");

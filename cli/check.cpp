@@ -25,7 +25,7 @@ struct PatchResidual {
 std::vector<PatchResidual> residuals(const std::vector<SolvedPatch>& solved) {
   std::vector<PatchResidual> out;
   for (const SolvedPatch& s : solved)
-    if (s.patch->kind == PatchKind::Pde) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.pde(), s.surface)});
+    if (s.patch->solvedAsPde()) out.push_back({s.patch->name, methodName(s.used), interiorResidual(s.pde(), s.surface)});
   return out;
 }
 

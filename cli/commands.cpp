@@ -30,7 +30,7 @@ int runSample(const Options& o, std::ostream& out) {
   if (o.controlNet) {
     if (patch->kind != PatchKind::Bezier) throw std::runtime_error("--control-net: patch '" + patch->name + "' is not a Bezier patch");
     b.put("i,j,x,y,z\n");
-    const int m = patch->bezier.m;
+    const int m = patch->bezier().m;
     for (size_t k = 0; k < solved.controlNet.size(); ++k) {
       const Eigen::Vector3d& x = solved.controlNet[k];
       char* p = putNumber(b.reserve(), static_cast<int>(k) / (m + 1));

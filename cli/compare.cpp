@@ -41,7 +41,7 @@ double medianSolveMicroseconds(const PdeProblem& p, const Method& m) {
 int runCompare(const Options& o, std::ostream& out) {
   const Scene scene = parseScene(readFile(o.scenePath));
   const Patch* patch = o.patch.empty() ? scene.firstPde() : scene.find(o.patch);
-  if (!patch || patch->kind != PatchKind::Pde)
+  if (!patch || !patch->solvedAsPde())
     throw std::runtime_error(o.patch.empty() ? "the scene has no PDE patch" : "no PDE patch named '" + o.patch + "'");
   const int Iu = o.gridGiven ? o.nu : 100, Jv = o.gridGiven ? o.nv : 100;
   if (Iu < 2 || Jv < 2 || Iu > 2048 || Jv > 2048) throw std::runtime_error("--grid must be 2x2 .. 2048x2048 for compare");

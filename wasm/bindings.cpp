@@ -35,9 +35,9 @@ val operatorOf(const Patch& p) {
   const char* axis[3] = {"x", "y", "z"};
   for (int c = 0; c < 3; ++c) {
     val comp = val::object();
-    comp.set("order", p.op[c].order);
+    comp.set("order", p.op()[c].order);
     val params = val::object();
-    for (size_t k = 0; k < p.op[c].names.size(); ++k) params.set(p.op[c].names[k], p.op[c].values[k]);
+    for (size_t k = 0; k < p.op()[c].names.size(); ++k) params.set(p.op()[c].names[k], p.op()[c].values[k]);
     comp.set("params", params);
     op.set(axis[c], comp);
   }
@@ -49,7 +49,7 @@ val operatorOf(const Patch& p) {
 val endsOf(const Patch& p) {
   val ends = val::object();
   for (int end = 0; end < 2; ++end) {
-    const EndReference& e = p.ends[end];
+    const EndReference& e = p.ends()[end];
     if (!e.given) continue;
     val o = val::object();
     if (!e.patch.empty()) {  // a chain (version 4): its conditions are derived when solved
@@ -88,7 +88,7 @@ std::vector<float> flatten(const std::vector<Eigen::Vector3d>& pts) {
 // Seed 002 patches: the solved and initial control nets, the guiding normals as arrows on the
 // solved surface, the energy and the normal misfit.
 void setBezierExtras(val& p, const SolvedPatch& sp) {
-  const BezierProblem& b = sp.patch->bezier;
+  const BezierProblem& b = sp.patch->bezier();
   p.set("netSize", val::array(std::vector<int>{b.n + 1, b.m + 1}));
   // The nets in doubles: a detached border is typed from them exactly (web/state/patch-delete.js).
   p.set("controlNet", copyOut(flattenExact(sp.controlNet)));
@@ -185,12 +185,12 @@ val solveSceneJs(const std::string& sceneJson, const val& nuArg, const val& nvAr
         p.set("dependsOn", on);
       }
       p.set("reused", sp.reused);
-      if (sp.patch->kind == PatchKind::Pde) {
+      if (sp.patch->solvedAsPde()) {
         p.set("operator", operatorOf(*sp.patch));
-        if (sp.patch->ends[0].given || sp.patch->ends[1].given) p.set("ends", endsOf(*sp.patch));
+        if (sp.patch->ends()[0].given || sp.patch->ends()[1].given) p.set("ends", endsOf(*sp.patch));
         p.set("method", methodName(sp.used));
         val methods = val::array();
-        for (const std::string& m : applicableMethods(sp.patch->pde)) methods.call<void>("push", m);
+        for (const std::string& m : applicableMethods(sp.patch->pde())) methods.call<void>("push", m);
         p.set("methods", methods);
       }
       if (sp.patch->kind == PatchKind::Bezier) setBezierExtras(p, sp);
@@ -248,7 +248,7 @@ val patchKindList() {
     val o = val::object();
     o.set("name", std::string(k.name));
     o.set("since", k.since);
-    o.set("solvedAs", std::string(k.solvedAs == PatchKind::Pde ? "pde" : k.solvedAs == PatchKind::Bezier ? "bezier" : "primary"));
+    o.set("solvedAs", std::string(k.solvedAs == PatchKind::Pde || k.solvedAs == PatchKind::Fill ? "pde" : k.solvedAs == PatchKind::Bezier ? "bezier" : "primary"));
     out.call<void>("push", o);
   }
   return out;

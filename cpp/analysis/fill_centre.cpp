@@ -142,7 +142,7 @@ void checkFillRegular(const Patch& fill, const SeparableSurface& surface) {
   std::ostringstream o;
   o.precision(3);
   o << "the fill folds at u = " << c.foldU << ", v = " << c.foldV << " (its normal turns over): move its centre, lower its height or its borders' power";
-  throw Error(ErrorCode::InvalidField, fill.fill.path + ": " + o.str());
+  throw Error(ErrorCode::InvalidField, fill.fill().path + ": " + o.str());
 }
 
 }  // namespace pdesurf

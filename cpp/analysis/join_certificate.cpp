@@ -17,11 +17,11 @@ namespace {
 // (2nd G0, 4th G1, 6th G2); a membrane Bézier fixes one ring (G0), a thin plate two (G1).
 // An end given by reference (scene version 3) promises the continuity it asks for.
 int promisedLevel(const Patch& p, int end) {
-  if (p.kind == PatchKind::Bezier) return p.bezier.energy == BezierEnergy::ThinPlate ? 1 : 0;
-  if (p.fill.given) return static_cast<int>(p.fill.continuity);
-  if (p.ends[end].given) return static_cast<int>(p.ends[end].continuity);
+  if (p.kind == PatchKind::Bezier) return p.bezier().energy == BezierEnergy::ThinPlate ? 1 : 0;
+  if (p.isFill()) return static_cast<int>(p.fill().continuity);
+  if (p.ends()[end].given) return static_cast<int>(p.ends()[end].continuity);
   int order = 6;
-  for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
+  for (const ComponentOperator& op : p.op()) order = std::min(order, op.order);
   return order / 2 - 1;
 }
 
@@ -235,9 +235,9 @@ bool dataSmoothAcrossSeam(const SeparableSurface& s, double size) {
 // a wing tip's trailing edge, say).
 int seamLevel(const Patch& p, const SeparableSurface& s, double size) {
   if (!dataSmoothAcrossSeam(s, size)) return 0;
-  if (p.fill.given) return std::max(1, static_cast<int>(p.fill.continuity));
+  if (p.isFill()) return std::max(1, static_cast<int>(p.fill().continuity));
   int order = 6;
-  for (const ComponentOperator& op : p.op) order = std::min(order, op.order);
+  for (const ComponentOperator& op : p.op()) order = std::min(order, op.order);
   return std::max(1, order / 2 - 1);
 }
 
@@ -257,7 +257,7 @@ JoinRanges joinRanges(const Meets& m, const SeparableSurface& primary, const Sol
   r.a1 = r.part ? m.targetTo : m.alongU ? ts.u1 : ts.v1;
   r.p0 = m.v0, r.p1 = m.v1;
   if (std::isnan(r.p0)) {
-    const bool sameV = target.patch->kind == PatchKind::Pde;
+    const bool sameV = target.patch->solvedAsPde();
     r.p0 = sameV ? r.a0 : primary.v0;
     r.p1 = sameV ? r.a1 : primary.v1;
   }
@@ -300,7 +300,7 @@ std::vector<JoinResult> certifyJoins(const Scene& scene, const std::vector<Solve
 
 std::optional<JoinResult> certifySeam(const SolvedPatch& sp) {
   const SeparableSurface& s = sp.surface;
-  if (sp.patch->kind != PatchKind::Pde) return std::nullopt;
+  if (!sp.patch->solvedAsPde()) return std::nullopt;
   const double size = patchSizeOf(s);
   if (!closesInV(s, size)) return std::nullopt;
   JoinResult r;
@@ -330,7 +330,7 @@ SceneReport checkScene(const Scene& scene, const std::vector<SolvedPatch>& solve
   r.joins = certifyJoins(scene, solved);
   r.seams = certifySeams(solved);
   for (const SolvedPatch& sp : solved)
-    if (sp.patch->fill.given) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
+    if (sp.patch->isFill()) r.centres.push_back(measureFillCentre(sp.patch->name, sp.surface));
   if (crossingGrid > 0) r.crossings = findCrossings(solved, r.sceneSize, crossingGrid);
   r.ok = r.crossings.empty();
   for (const JoinResult& j : r.joins) r.ok = r.ok && j.ok;

@@ -43,7 +43,7 @@ void ReportSession::begin(const Scene& scene, const std::vector<SolvedPatch>& so
     for (size_t k = 0; k < solved[i].patch->meets.size(); ++k) parts_.push_back({Kind::Join, i, k});
   for (size_t i = 0; i < solved.size(); ++i) parts_.push_back({Kind::Seam, i, 0});
   for (size_t i = 0; i < solved.size(); ++i)
-    if (solved[i].patch->fill.given) parts_.push_back({Kind::Centre, i, 0});
+    if (solved[i].patch->isFill()) parts_.push_back({Kind::Centre, i, 0});
   // The bodies in pieces: each face's integrals (its own surface's), then the topology.
   faces_.assign(solved.size(), FaceMeasure{});
   for (size_t i = 0; i < solved.size(); ++i) parts_.push_back({Kind::Face, i, 0});

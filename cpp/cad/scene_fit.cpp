@@ -36,7 +36,7 @@ PatchFit fitPatch(const SolvedPatch& sp, const FitOptions& fit) {
   PatchFit f;
   try {
     if (sp.patch->kind == PatchKind::Bezier) {
-      f.surface = bezierAsBSpline(sp.patch->bezier.n, sp.patch->bezier.m, sp.controlNet);
+      f.surface = bezierAsBSpline(sp.patch->bezier().n, sp.patch->bezier().m, sp.controlNet);
       f.report.exact = true;
     } else {
       f.surface = fitSurface(sp.surface, fit, &f.report);

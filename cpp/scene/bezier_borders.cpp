@@ -65,7 +65,7 @@ void locate(Scene& scene, Border& b) {
   b.surfaceIndex = scene_json::referencedSurface(scene, ref.surface, ref.path, "a border");
   b.surface = &scene.patches[b.surfaceIndex];
   const Patch& s = *b.surface;
-  if (s.primary.trimmed)
+  if (s.primary().trimmed)
     fail(ErrorCode::InvalidField, ref.path + ".surface",
          "'" + ref.surface + "' is trimmed along a curve by a blend end; a Bezier border needs an untrimmed surface");
 }
@@ -74,7 +74,7 @@ void locate(Scene& scene, Border& b) {
 // trimline is (finite, S_t neither vanishing nor along the border), then sampled.
 void derive(Border& b, ExprBudget& budget) {
   const BorderReference& ref = *b.ref;
-  const PrimarySurface& S = b.surface->primary;
+  const PrimarySurface& S = b.surface->primary();
   budget.setPath(ref.path);
   TrimlineExprs x;
   x.tau = constant(ref.atT1 ? S.t1 : S.t0);
@@ -193,7 +193,7 @@ void ringOne(const Border& b, const std::vector<Vec3>& net, std::vector<Vec3>& s
 void recordJoin(const Border& b, const Patch& patch) {
   const BorderReference& ref = *b.ref;
   Meets m;
-  const PrimarySurface& S = b.surface->primary;
+  const PrimarySurface& S = b.surface->primary();
   m.borderGap = b.gap.verdict == CurveGap::Undecided ? INFINITY : b.gap.verdict == CurveGap::Found ? b.gap.gap : 0.0;
   m.borderGapV = ref.reverse ? S.v1 + b.gap.s * (S.v0 - S.v1) : S.v0 + b.gap.s * (S.v1 - S.v0);
   m.patch = patch.name;
@@ -217,7 +217,7 @@ void recordJoin(const Border& b, const Patch& patch) {
 
 void deriveOne(Scene& scene, size_t index, ExprBudget& budget, size_t& proofWork) {
   Patch& patch = scene.patches[index];
-  BezierProblem& p = patch.bezier;
+  BezierProblem& p = patch.bezier();
   const std::string path = "patches[" + std::to_string(index) + "].borders";
   if (p.n < 3 || p.m < 3)
     fail(ErrorCode::InvalidField, path,
@@ -226,9 +226,9 @@ void deriveOne(Scene& scene, size_t index, ExprBudget& budget, size_t& proofWork
   all.reserve(4);
   std::vector<Border*> edge(4, nullptr);
   for (int e = 0; e < 4; ++e) {
-    if (!patch.borders[e].given) continue;
+    if (!patch.borders()[e].given) continue;
     Border& b = all.emplace_back();
-    b.ref = &patch.borders[e];
+    b.ref = &patch.borders()[e];
     b.net = {p.n, p.m, e};
     locate(scene, b);
     derive(b, budget);
@@ -249,7 +249,7 @@ void deriveOne(Scene& scene, size_t index, ExprBudget& budget, size_t& proofWork
     const int N = b.net.along();
     const std::vector<Vec3> c = fitPinned(N, b.P, net[b.net.at(0, 0)], net[b.net.at(N, 0)]);
     for (int k = 1; k < N; ++k) net[b.net.at(k, 0)] = c[k];
-    const PrimarySurface& S = b.surface->primary;
+    const PrimarySurface& S = b.surface->primary();
     budget.setPath(b.ref->path);
     b.gap = boundCurveGap(b.edge, b.ref->reverse ? S.v1 : S.v0, b.ref->reverse ? S.v0 : S.v1, c, kCornerTolerance * size, kCurveGapPieces, &proofWork);
   }
@@ -289,7 +289,7 @@ void deriveBorders(Scene& scene, ExprBudget& budget) {
     const Patch& patch = scene.patches[i];
     if (patch.kind != PatchKind::Bezier) continue;
     bool any = false;
-    for (const BorderReference& ref : patch.borders) any = any || ref.given;
+    for (const BorderReference& ref : patch.borders()) any = any || ref.given;
     if (any) deriveOne(scene, i, budget, proofWork);
   }
 }

@@ -94,7 +94,7 @@ void parseBorders(const json& j, const std::string& path, int version, Patch& pa
     const std::string ep = bp + "." + kBezierEdge[e];
     const json& ej = j[kBezierEdge[e]];
     allowOnly(ej, ep, {"surface", "at", "reverse"});
-    BorderReference& ref = patch.borders[e];
+    BorderReference& ref = patch.borders()[e];
     ref.given = true;
     ref.path = ep;
     ref.surface = stringField(require(ej, "surface", ep), ep + ".surface", 64);
@@ -114,8 +114,8 @@ void parseBezierPatch(const json& j, const std::string& path, const Resolver& r,
   allowOnly(j, path, {"name", "kind", "energy", "degree", "control_net", "lambda", "gamma", "normals", "borders"});
   if (j.contains("borders")) parseBorders(j["borders"], path, version, patch);
   bool allFour = true;
-  for (const BorderReference& ref : patch.borders) allFour = allFour && ref.given;
-  BezierProblem& b = patch.bezier;
+  for (const BorderReference& ref : patch.borders()) allFour = allFour && ref.given;
+  BezierProblem& b = patch.bezier();
   const std::string energy = stringField(require(j, "energy", path), path + ".energy");
   if (energy == "membrane") b.energy = BezierEnergy::Membrane;
   else if (energy == "thin-plate") b.energy = BezierEnergy::ThinPlate;

@@ -17,10 +17,10 @@ Vec3Expr onParameter(const Vec3Expr& e, const Expr& s) {
 }
 
 void deriveChainEnd(const Patch& patch, int end, const SolvedLookup& solved, PdeProblem& out) {
-  const EndReference& ref = patch.ends[end];
+  const EndReference& ref = patch.ends()[end];
   const SolvedPatch& source = solved(ref.patch);
   int slots = 0;
-  for (const ComponentOperator& op : patch.op) slots = std::max(slots, op.order / 2);
+  for (const ComponentOperator& op : patch.op()) slots = std::max(slots, op.order / 2);
   EdgeExprs e = solvedEdge(source, ref.patchEdge, slots - 1);
   if (source.patch->kind == PatchKind::Bezier) {
     // The border's parameter [0, 1] runs over this patch's v-range (backwards with reverse).
@@ -34,7 +34,7 @@ void deriveChainEnd(const Patch& patch, int end, const SolvedLookup& solved, Pde
   for (int c = 0; c < 3; ++c) {
     ComponentProblem& cp = out.component[c];
     std::vector<VExpansion>& slot = end == 0 ? cp.left : cp.right;
-    const int n = patch.op[c].order / 2;
+    const int n = patch.op()[c].order / 2;
     slot.assign(n, {});
     const Expr conditions[3] = {e.X[c], multiply(constant(sign * p), e.out[c]), multiply(constant(p * p), e.outOut[c])};
     for (int i = 0; i < n; ++i) slot[i] = scene_json::slotFromExpr(conditions[i], ref.path + " (from " + from + ")");
@@ -44,19 +44,19 @@ void deriveChainEnd(const Patch& patch, int end, const SolvedLookup& solved, Pde
 }  // namespace
 
 std::shared_ptr<const PdeProblem> derivedProblem(const Patch& patch, const SolvedLookup& solved, size_t* sceneNodes) {
-  auto out = std::make_shared<PdeProblem>(patch.pde);
+  auto out = std::make_shared<PdeProblem>(patch.pde());
   const size_t used = sceneNodes ? std::min(*sceneNodes, limits::kSceneDerivedNodes) : 0;
   const bool sceneBound = limits::kSceneDerivedNodes - used < limits::kDerivedNodes;
   ExprBudget budget(sceneBound ? limits::kSceneDerivedNodes - used : limits::kDerivedNodes,
                     sceneBound ? "the conditions derived from solved patches, summed over the scene (" + std::to_string(used) + " nodes before this patch's),"
                                : std::string("the conditions derived from solved patches"));
   for (int end = 0; end < 2; ++end) {
-    if (!patch.ends[end].given || patch.ends[end].patch.empty()) continue;
-    budget.setPath(patch.ends[end].path);
+    if (!patch.ends()[end].given || patch.ends()[end].patch.empty()) continue;
+    budget.setPath(patch.ends()[end].path);
     deriveChainEnd(patch, end, solved, *out);
   }
-  if (patch.fill.given) {
-    budget.setPath(patch.fill.path);
+  if (patch.isFill()) {
+    budget.setPath(patch.fill().path);
     deriveFill(patch, solved, *out);
   }
   if (sceneNodes) *sceneNodes += budget.used();

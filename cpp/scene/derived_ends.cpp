@@ -52,7 +52,7 @@ struct DerivedEnd {
 // Step 1: the surface an end names (a "surface" patch), untouched.
 DerivedEnd locate(Scene& scene, Patch& blend, int end) {
   DerivedEnd d;
-  d.blend = &blend, d.end = end, d.ref = &blend.ends[end];
+  d.blend = &blend, d.end = end, d.ref = &blend.ends()[end];
   d.surfaceIndex = scene_json::referencedSurface(scene, d.ref->surface, d.ref->path, "an end");
   d.surface = &scene.patches[d.surfaceIndex];
   return d;
@@ -69,7 +69,7 @@ bool locateBorder(Scene& scene, Patch& fill, LoopBorder& b, DerivedEnd& d) {
     b.curve.surface = b.patch, b.curve.atT1 = b.edge == 1, b.curve.path = b.path;
   } else {
     if (!source) fail(ErrorCode::UnknownName, b.path + ".patch", "no patch named '" + b.patch + "'");
-    if (source->kind != PatchKind::Primary || !source->primary.full[0])
+    if (source->kind != PatchKind::Primary || !source->primary().full[0])
       fail(ErrorCode::InvalidField, b.path + ".at",
            "'" + b.patch + "' is a " + source->kindName + " patch; a trimline curve is drawn on a \"surface\" patch (expressions in t and v)");
     b.curve.power = constant(1.0);
@@ -116,7 +116,7 @@ void checkRules(const std::vector<DerivedEnd>& all) {
 // Step 3: S, S_t (and S_tt) on the trimline, checked.
 void derive(DerivedEnd& d) {
   const EndReference& ref = *d.ref;
-  const PrimarySurface& S = d.surface->primary;
+  const PrimarySurface& S = d.surface->primary();
   d.e.tau = ref.curve ? ref.tau : constant(ref.atT1 ? S.t1 : S.t0);
   // Built under the scene's budget (deriveEnds); S_tt only where curvature is asked.
   const Vec3Expr St = map3(S.full, derivative);
@@ -124,7 +124,7 @@ void derive(DerivedEnd& d) {
   d.e.T = onTrimline(St, d.e.tau);
   if (ref.continuity == Continuity::Curvature) d.e.C = onTrimline(map3(St, derivative), d.e.tau);
   // A fill's curve is checked over the surface's whole v-range: the surface is drawn over it.
-  d.meanT = d.border ? checkTrimline(ref, S, d.e, S.v0, S.v1) : checkTrimline(ref, S, d.e, d.blend->pde.v0, d.blend->pde.v1);
+  d.meanT = d.border ? checkTrimline(ref, S, d.e, S.v0, S.v1) : checkTrimline(ref, S, d.e, d.blend->pde().v0, d.blend->pde().v1);
 }
 
 // Mean distance between the two ends' curves over the blend's v-range.
@@ -145,28 +145,28 @@ void writeConditions(Patch& blend, const std::array<const DerivedEnd*, 2>& deriv
     if (derived[end]) {
       pos[end] = derived[end]->e.P;
     } else {
-      for (int c = 0; c < 3; ++c) pos[end][c] = blend.typedPosition[end][c] ? blend.typedPosition[end][c] : constant(0.0);
+      for (int c = 0; c < 3; ++c) pos[end][c] = blend.typedPosition()[end][c] ? blend.typedPosition()[end][c] : constant(0.0);
     }
   }
-  const double gap = meanGap(pos, blend.pde.v0, blend.pde.v1);
+  const double gap = meanGap(pos, blend.pde().v0, blend.pde().v1);
   for (int end = 0; end < 2; ++end) {
     if (!derived[end]) continue;
-    EndReference& ref = blend.ends[end];
+    EndReference& ref = blend.ends()[end];
     budget.setPath(ref.path);
     const DerivedEnd& d = *derived[end];
     // "gap" scale, power 1: a mean tangent as long as the mean gap (of unit length when the
     // ends touch); "surface": power 1 continues the surface's t at its own speed.
     // Beside a chained end (version 4) the other end's curve is known only once solved: the
     // surface's own speed then.
-    const bool chained = !blend.ends[0].patch.empty() || !blend.ends[1].patch.empty();
+    const bool chained = !blend.ends()[0].patch.empty() || !blend.ends()[1].patch.empty();
     const double k = ref.surfaceScale || chained ? 1.0 : (gap > 0 ? gap : 1.0) / d.meanT;
     const double away = (ref.atT1 ? 1.0 : -1.0) * (ref.flip ? -1.0 : 1.0);  // the blend's side, in t
     const double sign = end == 0 ? away : -away;
     const int level = static_cast<int>(ref.continuity);
     for (int c = 0; c < 3; ++c) {
-      ComponentProblem& cp = blend.pde.component[c];
+      ComponentProblem& cp = blend.pde().component[c];
       std::vector<VExpansion>& slots = end == 0 ? cp.left : cp.right;
-      const int n = blend.op[c].order / 2;
+      const int n = blend.op()[c].order / 2;
       slots.assign(n, {});
       std::array<Expr, 3> e;
       e[0] = d.e.P[c];
@@ -205,7 +205,7 @@ void recordJoin(const DerivedEnd& d, bool trimmed) {
 // Its pointwise expression and the partial derivatives drawing needs are built here, under the
 // scene's budget, so tessellation never differentiates an unbounded graph.
 void trim(Patch& surface, const EndReference& ref) {
-  PrimarySurface& S = surface.primary;
+  PrimarySurface& S = surface.primary();
   if (S.trimmed) return;  // by an end or border with the same curve
   const Expr tFar = constant(ref.atT1 ? S.t0 : S.t1);
   const Expr t = add(ref.tau, multiply(variable(ExprVar::U), subtract(tFar, ref.tau)));
@@ -239,10 +239,10 @@ void deriveEnds(Scene& scene, ExprBudget& budget) {
   // limit stops the derivation.
   std::vector<DerivedEnd> all;
   for (Patch& blend : scene.patches) {
-    if (blend.kind != PatchKind::Pde) continue;
+    if (!blend.solvedAsPde()) continue;
     for (int end = 0; end < 2; ++end)
-      if (blend.ends[end].given && blend.ends[end].patch.empty()) all.push_back(locate(scene, blend, end));
-    for (LoopBorder& b : blend.fill.borders) {
+      if (blend.ends()[end].given && blend.ends()[end].patch.empty()) all.push_back(locate(scene, blend, end));
+    for (LoopBorder& b : blend.fill().borders) {
       DerivedEnd d;
       if (locateBorder(scene, blend, b, d)) all.push_back(d);
     }

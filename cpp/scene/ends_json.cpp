@@ -121,8 +121,8 @@ int parseEnds(const json& j, const std::string& path, const Resolver& r, int ver
   for (int end = 0; end < 2; ++end) {
     const char* key = end == 0 ? "u0" : "u1";
     if (!j.contains(key)) continue;
-    patch.ends[end] = parseEnd(j[key], path + "." + key, r, version);
-    order = std::max(order, 2 * (static_cast<int>(patch.ends[end].continuity) + 1));
+    patch.ends()[end] = parseEnd(j[key], path + "." + key, r, version);
+    order = std::max(order, 2 * (static_cast<int>(patch.ends()[end].continuity) + 1));
   }
   if (order == 0) fail(ErrorCode::InvalidField, path, "expected u0, u1 or both");
   return order;

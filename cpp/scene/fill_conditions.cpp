@@ -47,7 +47,7 @@ Expr indicator(double v0, double v1) {
 }  // namespace
 
 void deriveFill(const Patch& fill, const SolvedLookup& solved, PdeProblem& out) {
-  const FillLoop& loop = fill.fill;
+  const FillLoop& loop = fill.fill();
   const int depth = static_cast<int>(loop.continuity);
   const bool tangency = depth >= 1, curvature = depth >= 2;
   const size_t n = loop.borders.size();

@@ -58,7 +58,7 @@ Eigen::Vector3d vectorField(const json& j, const std::string& path, const Resolv
 void parseFillPatch(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
   if (version < 4) fail(ErrorCode::InvalidField, path + ".kind", "a fill needs scene version 4");
   allowOnly(j, path, {"name", "kind", "borders", "continuity", "centre", "normal", "height", "operator", "force", "method"});
-  FillLoop& fill = patch.fill;
+  FillLoop& fill = patch.fill();
   fill.given = true;
   fill.path = path;
   const json& borders = require(j, "borders", path);
@@ -100,10 +100,10 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
   parsePdePatch(pde, path, r, version, patch);
   patch.kindName = "fill";
   for (int c = 0; c < 3; ++c)
-    if (patch.op[c].order != order)
+    if (patch.op()[c].order != order)
       fail(ErrorCode::InvalidField, path + ".operator",
            std::string(order == 2 ? "position" : order == 4 ? "tangency" : "curvature") + " continuity needs an order-" + std::to_string(order) + " operator; " + kAxis[c] +
-               " has order " + std::to_string(patch.op[c].order));
+               " has order " + std::to_string(patch.op()[c].order));
 }
 
 }  // namespace pdesurf

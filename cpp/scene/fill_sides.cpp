@@ -15,8 +15,8 @@ Eigen::Vector3d valueAt(const Vec3Expr& e, double v) {
 
 FillSide fillSideOf(const Patch& fill, size_t k, const SolvedLookup& solved, int depth) {
   const bool tangency = depth >= 1;
-  const LoopBorder& b = fill.fill.borders[k];
-  const size_t n = fill.fill.borders.size();
+  const LoopBorder& b = fill.fill().borders[k];
+  const size_t n = fill.fill().borders.size();
   const SolvedPatch& source = solved(b.patch);
   EdgeExprs e = solvedEdge(source, b.edge, depth);
   FillSide s;

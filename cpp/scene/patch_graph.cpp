@@ -37,9 +37,9 @@ size_t indexOf(const Scene& scene, const std::string& name, const std::string& p
 void checkEdge(const Patch& p, int edge, const std::string& path, bool surfaceAllowed) {
   if (p.kind == PatchKind::Primary && !surfaceAllowed)
     fail(ErrorCode::InvalidField, path + ".patch", "'" + p.name + "' is a surface: an end on a surface names it with \"surface\"");
-  if (p.fill.given) fail(ErrorCode::InvalidField, path + ".patch", "'" + p.name + "' is a fill: its border belongs to the patches it closes");
+  if (p.isFill()) fail(ErrorCode::InvalidField, path + ".patch", "'" + p.name + "' is a fill: its border belongs to the patches it closes");
   if (p.kind != PatchKind::Bezier && edge > 1)
-    fail(ErrorCode::InvalidField, path + ".at", "'" + p.name + "' is a " + (p.kind == PatchKind::Pde ? "pde patch: its ends are u0 and u1" : "surface: its borders are t0 and t1"));
+    fail(ErrorCode::InvalidField, path + ".at", "'" + p.name + "' is a " + (p.solvedAsPde() ? "pde patch: its ends are u0 and u1" : "surface: its borders are t0 and t1"));
 }
 
 void depend(Patch& p, const std::string& on) {
@@ -48,21 +48,21 @@ void depend(Patch& p, const std::string& on) {
 
 void linkEnd(Scene& scene, size_t index, int end) {
   Patch& blend = scene.patches[index];
-  const EndReference& ref = blend.ends[end];
+  const EndReference& ref = blend.ends()[end];
   const size_t si = indexOf(scene, ref.patch, ref.path, blend.name);
   Patch& source = scene.patches[si];
   checkEdge(source, ref.patchEdge, ref.path, false);
-  if (source.kind == PatchKind::Pde && (source.pde.v0 != blend.pde.v0 || source.pde.v1 != blend.pde.v1)) {
+  if (source.solvedAsPde() && (source.pde().v0 != blend.pde().v0 || source.pde().v1 != blend.pde().v1)) {
     // As many digits as tell the two apart (one ulp apart, 6 digits print the same numbers).
     const auto differs = [](double a, double b) { return number(a) != number(b) ? std::make_pair(number(a), number(b)) : std::make_pair(exact(a), exact(b)); };
-    const auto [a0, b0] = differs(blend.pde.v0, source.pde.v0);
-    const auto [a1, b1] = differs(blend.pde.v1, source.pde.v1);
+    const auto [a0, b0] = differs(blend.pde().v0, source.pde().v0);
+    const auto [a1, b1] = differs(blend.pde().v1, source.pde().v1);
     fail(ErrorCode::InvalidField, ref.path + ".patch",
          "the v_range [" + a0 + ", " + a1 + "] differs from '" + source.name + "''s [" + b0 + ", " + b1 + "]: a chain shares v with the patch it continues");
   }
   // Both ends on one edge: three sheets would meet along it (version 3 refuses the same for a
   // surface's border).
-  const EndReference& other = blend.ends[1 - end];
+  const EndReference& other = blend.ends()[1 - end];
   if (end == 1 && other.given && other.patch == ref.patch && other.patchEdge == ref.patchEdge)
     fail(ErrorCode::InvalidField, ref.path + ".at",
          "continues " + edgeName(source, ref.patchEdge) + " of '" + source.name + "', as " + other.path + " does: the patch would start and end on the same edge");
@@ -80,9 +80,9 @@ void linkEnd(Scene& scene, size_t index, int end) {
 
 void linkFill(Scene& scene, size_t index) {
   Patch& fill = scene.patches[index];
-  const size_t n = fill.fill.borders.size();
+  const size_t n = fill.fill().borders.size();
   for (size_t k = 0; k < n; ++k) {
-    LoopBorder& b = fill.fill.borders[k];
+    LoopBorder& b = fill.fill().borders[k];
     Patch& source = scene.patches[indexOf(scene, b.patch, b.path, fill.name)];
     checkEdge(source, b.edge, b.path, true);
     const auto range = edgeRange(source);
@@ -100,7 +100,7 @@ void linkFill(Scene& scene, size_t index) {
     m.sourceEdge = source.kind == PatchKind::Primary ? -1 : b.edge;
     m.curve = b.curve.curve, m.replacesT1 = b.curve.curve && b.curve.atT1;  // for the certificate's label
     // The far border of a trimmed surface, named as the scene names it (locateBorder kept it).
-    if (source.kind == PatchKind::Primary && source.primary.trimmed && !b.curve.curve) m.namedT = b.curve.atT1 ? 1 : 0;
+    if (source.kind == PatchKind::Primary && source.primary().trimmed && !b.curve.curve) m.namedT = b.curve.atT1 ? 1 : 0;
     m.v0 = b.from, m.v1 = b.to, m.reversed = b.reverse;
     const auto part = fillSideRange(k, n);
     m.targetFrom = part[0], m.targetTo = part[1];
@@ -143,11 +143,11 @@ struct Order {
   }
 
   static std::string refPath(const Patch& p, const std::string& on) {
-    for (const EndReference& e : p.ends)
+    for (const EndReference& e : p.ends())
       if (e.given && e.patch == on) return e.path;
-    for (const LoopBorder& b : p.fill.borders)
+    for (const LoopBorder& b : p.fill().borders)
       if (b.patch == on) return b.path;
-    return p.fill.path;
+    return p.fill().path;
   }
 };
 
@@ -155,8 +155,8 @@ struct Order {
 
 std::array<double, 2> edgeRange(const Patch& p) {
   if (p.kind == PatchKind::Bezier) return {0.0, 1.0};
-  if (p.kind == PatchKind::Primary) return {p.primary.v0, p.primary.v1};
-  return {p.pde.v0, p.pde.v1};
+  if (p.kind == PatchKind::Primary) return {p.primary().v0, p.primary().v1};
+  return {p.pde().v0, p.pde().v1};
 }
 
 std::string edgeName(const Patch& p, int edge) {
@@ -184,7 +184,7 @@ EdgeSpan spanOf(const Scene& scene, const Patch& p, const Meets& m) {
   } else if (p.kind == PatchKind::Primary) {
     // A pde blend shares v with the surface: its own v-range.
     const Patch* target = scene.find(m.patch);
-    if (target && target->kind == PatchKind::Pde && !target->fill.given) range = {target->pde.v0, target->pde.v1};
+    if (target && target->solvedAsPde() && !target->isFill()) range = {target->pde().v0, target->pde().v1};
   }
   e.from = std::min(range[0], range[1]), e.to = std::max(range[0], range[1]);
   return e;
@@ -226,10 +226,10 @@ void checkEdgesMetOnce(const Scene& scene) {
 void linkPatches(Scene& scene) {
   for (size_t i = 0; i < scene.patches.size(); ++i) {
     Patch& p = scene.patches[i];
-    if (p.kind != PatchKind::Pde) continue;
+    if (!p.solvedAsPde()) continue;
     for (int end = 0; end < 2; ++end)
-      if (p.ends[end].given && !p.ends[end].patch.empty()) linkEnd(scene, i, end);
-    if (p.fill.given) linkFill(scene, i);
+      if (p.ends()[end].given && !p.ends()[end].patch.empty()) linkEnd(scene, i, end);
+    if (p.isFill()) linkFill(scene, i);
   }
   Order order{scene, std::vector<int>(scene.patches.size(), 0), {}, {}};
   for (size_t i = 0; i < scene.patches.size(); ++i) order.visit(i);

@@ -11,7 +11,7 @@ void parseBezier(const PatchParse& in, Patch& patch) {
   try {
     parseBezierPatch(in.j, in.path, in.r, in.version, patch, in.bezierWork);
     // A net left out (four borders by reference) is checked once deriveBorders has built it.
-    if (!patch.bezier.initial.empty()) validateBezierProblem(patch.bezier);
+    if (!patch.bezier().initial.empty()) validateBezierProblem(patch.bezier());
   } catch (const Error& e) {
     const std::string what = e.what();
     throw Error(e.code(), what.rfind(in.path, 0) == 0 ? what : in.path + ": " + what);
@@ -25,7 +25,7 @@ const std::vector<PatchKindEntry>& patchKinds() {
       {"pde", PatchKind::Pde, 1, [](const PatchParse& in, Patch& p) { parsePdePatch(in.j, in.path, in.r, in.version, p); },
        "its ends' conditions from the surfaces they meet (version 3) or the patches they continue (version 4)",
        "u0 and u1 (its ends, by chains and fills); v0 = v1 when it closes (a seam)"},
-      {"fill", PatchKind::Pde, 4, [](const PatchParse& in, Patch& p) { parseFillPatch(in.j, in.path, in.r, in.version, p); },
+      {"fill", PatchKind::Fill, 4, [](const PatchParse& in, Patch& p) { parseFillPatch(in.j, in.path, in.r, in.version, p); },
        "its loop's position and tangents from the borders it names, its centre from the loop",
        "u0 (the loop, in parts, one per border); u1 collapses to the centre"},
       {"surface", PatchKind::Primary, 2, [](const PatchParse& in, Patch& p) { parseSurface(in.j, in.path, in.r, in.version, p); },

@@ -134,14 +134,14 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
   }
   if (j.contains("method")) {
     try {
-      patch.method = parseMethod(stringField(j["method"], path + ".method", 64));
+      patch.method() = parseMethod(stringField(j["method"], path + ".method", 64));
     } catch (const Error& e) {
       fail(e.code(), path + ".method", e.what());
     }
   }
   const auto vr = r.range(j, "v_range", path, 0.0, 2 * M_PI);
-  patch.pde.v0 = vr[0];
-  patch.pde.v1 = vr[1];
+  patch.pde().v0 = vr[0];
+  patch.pde().v1 = vr[1];
 
   const std::string op = path + ".operator";
   json withOrder;  // the operator object, given its order when the ends decide it
@@ -168,30 +168,30 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
   for (int c = 0; c < 3; ++c) {
     if (perComponent) {
       const std::string cp = op + "." + kAxis[c];
-      patch.op[c] = parseOperator(require(o, kAxis[c], op), cp, r, -1);
-      checkLeading(patch.op[c], o[kAxis[c]], cp, c, false);
+      patch.op()[c] = parseOperator(require(o, kAxis[c], op), cp, r, -1);
+      checkLeading(patch.op()[c], o[kAxis[c]], cp, c, false);
     } else {
-      patch.op[c] = parseOperator(o, op, r, c);
-      checkLeading(patch.op[c], o, op, c, true);
+      patch.op()[c] = parseOperator(o, op, r, c);
+      checkLeading(patch.op()[c], o, op, c, true);
     }
-    patch.pde.component[c].alpha = alphaOf(patch.op[c]);
-    if (patch.op[c].order < needed) {
-      const int end = static_cast<int>(patch.ends[1].continuity) > static_cast<int>(patch.ends[0].continuity) && patch.ends[1].given ? 1 : 0;
+    patch.pde().component[c].alpha = alphaOf(patch.op()[c]);
+    if (patch.op()[c].order < needed) {
+      const int end = static_cast<int>(patch.ends()[1].continuity) > static_cast<int>(patch.ends()[0].continuity) && patch.ends()[1].given ? 1 : 0;
       static const char* level[3] = {"position", "tangency", "curvature"};
       fail(ErrorCode::InvalidField, (perComponent ? op + "." + kAxis[c] : op) + ".order",
-           std::string(level[static_cast<int>(patch.ends[end].continuity)]) + " continuity at " + (end ? "u1" : "u0") +
-               " needs an order-" + std::to_string(needed) + " operator; " + kAxis[c] + " has order " + std::to_string(patch.op[c].order));
+           std::string(level[static_cast<int>(patch.ends()[end].continuity)]) + " continuity at " + (end ? "u1" : "u0") +
+               " needs an order-" + std::to_string(needed) + " operator; " + kAxis[c] + " has order " + std::to_string(patch.op()[c].order));
     }
   }
 
   const std::string bp = path + ".boundary";
   static const json kNone = json::object();
-  const bool allByReference = patch.ends[0].given && patch.ends[1].given;
+  const bool allByReference = patch.ends()[0].given && patch.ends()[1].given;
   const json& bnd = allByReference && !j.contains("boundary") ? kNone : require(j, "boundary", path);
   allowOnly(bnd, bp, {"x", "y", "z"});
   for (int k = 0; k < 3; ++k) {
-    const int n = patch.op[k].order / 2;
-    ComponentProblem& cp = patch.pde.component[k];
+    const int n = patch.op()[k].order / 2;
+    ComponentProblem& cp = patch.pde().component[k];
     cp.left.assign(n, {});
     cp.right.assign(n, {});
     if (!bnd.contains(kAxis[k])) continue;
@@ -203,7 +203,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
       if (!comp.contains(key)) continue;
       const json& list = comp[key];
       const std::string lp = cpath + "." + key;
-      if (patch.ends[end].given)
+      if (patch.ends()[end].given)
         fail(ErrorCode::InvalidField, lp, std::string("end ") + key + " is given by reference (" + path + ".ends." + key + "): its conditions are derived, not typed");
       static const char* kinds[3] = {"X", "dX/du", "d2X/du2"};
       std::string expect = kinds[0];
@@ -214,7 +214,7 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
       for (size_t i = 0; i < list.size(); ++i) {
         const std::string sp = lp + "[" + std::to_string(i) + "]";
         VExpansion& slot = (end == 0 ? cp.left : cp.right)[i];
-        if (version >= 2) slot = slotExpression(list[i], sp, r, i == 0 ? &patch.typedPosition[end][k] : nullptr);
+        if (version >= 2) slot = slotExpression(list[i], sp, r, i == 0 ? &patch.typedPosition()[end][k] : nullptr);
         else slot = r.terms(list[i], sp);
       }
     }
@@ -226,8 +226,8 @@ void parsePdePatch(const json& j, const std::string& path, const Resolver& r, in
     for (int k = 0; k < 3; ++k) {
       if (!j["force"].contains(kAxis[k])) continue;
       const std::string cp = fp + "." + kAxis[k];
-      if (version >= 2) forceExpression(j["force"][kAxis[k]], cp, r, patch.pde.component[k]);
-      else parseForce(j["force"][kAxis[k]], cp, r, patch.pde.component[k]);
+      if (version >= 2) forceExpression(j["force"][kAxis[k]], cp, r, patch.pde().component[k]);
+      else parseForce(j["force"][kAxis[k]], cp, r, patch.pde().component[k]);
     }
   }
 }

@@ -48,14 +48,14 @@ void primaryRanges(const json& j, const std::string& path, const Resolver& r, Pr
 void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "curve", "direction", "meets"});
   parseMeets(j, path, r, patch);
-  primaryRanges(j, path, r, patch.primary);
+  primaryRanges(j, path, r, patch.primary());
   require(j, "curve", path);
   require(j, "direction", path);
   const auto curve = r.vectorTerms(j, "curve", path);
   const auto direction = r.vectorTerms(j, "direction", path);
   for (int c = 0; c < 3; ++c) {
-    for (const VTerm& t : curve[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 0}, t.g, t.coef});
-    for (const VTerm& t : direction[c]) patch.primary.terms[c].push_back({VFunction{Family::Poly, 1.0, 1}, t.g, t.coef});
+    for (const VTerm& t : curve[c]) patch.primary().terms[c].push_back({VFunction{Family::Poly, 1.0, 0}, t.g, t.coef});
+    for (const VTerm& t : direction[c]) patch.primary().terms[c].push_back({VFunction{Family::Poly, 1.0, 1}, t.g, t.coef});
   }
 }
 
@@ -64,19 +64,19 @@ void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch
 void parseSurface(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets", "placement"});
   parseMeets(j, path, r, patch);
-  primaryRanges(j, path, r, patch.primary);
+  primaryRanges(j, path, r, patch.primary());
   std::array<Expr, 3> xyz;
   for (int c = 0; c < 3; ++c)  // a missing coordinate is 0
     xyz[c] = j.contains(kAxis[c]) ? surfaceField(j[kAxis[c]], path + "." + kAxis[c], r) : constant(0.0);
   if (j.contains("placement")) {
     if (version < 4) fail(ErrorCode::InvalidField, path + ".placement", "a placement needs scene version 4");
     const Placement placement = parsePlacement(j["placement"], path + ".placement", r);
-    checkPlacementReach(placement, xyz, patch.primary.t0, patch.primary.t1, patch.primary.v0, patch.primary.v1, path + ".placement");
+    checkPlacementReach(placement, xyz, patch.primary().t0, patch.primary().t1, patch.primary().v0, patch.primary().v1, path + ".placement");
     xyz = applyPlacement(placement, xyz);
   }
   for (int c = 0; c < 3; ++c) {
-    patch.primary.full[c] = xyz[c];
-    splitSurface(xyz[c], patch.primary.terms[c], &patch.primary.pointwise[c]);
+    patch.primary().full[c] = xyz[c];
+    splitSurface(xyz[c], patch.primary().terms[c], &patch.primary().pointwise[c]);
   }
 }
 
@@ -84,7 +84,7 @@ void parseSurface(const json& j, const std::string& path, const Resolver& r, int
 void parseSeparable(const json& j, const std::string& path, const Resolver& r, Patch& patch) {
   allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets"});
   parseMeets(j, path, r, patch);
-  primaryRanges(j, path, r, patch.primary);
+  primaryRanges(j, path, r, patch.primary());
   for (int c = 0; c < 3; ++c) {
     if (!j.contains(kAxis[c])) continue;
     const std::string cp = path + "." + kAxis[c];
@@ -104,7 +104,7 @@ void parseSeparable(const json& j, const std::string& path, const Resolver& r, P
         vpart.erase("t");
       }
       const VTerm vt = r.terms(json::array({vpart}), cp).front();
-      patch.primary.terms[c].push_back({tf, vt.g, vt.coef});
+      patch.primary().terms[c].push_back({tf, vt.g, vt.coef});
     }
   }
 }

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "bezier/bezier_solver_cache.hpp"
@@ -24,7 +25,9 @@ struct Parameter {
   double value = 0, min = 0, max = 0, step = 0;  // step 0: not given
 };
 
-enum class PatchKind { Pde, Primary, Bezier };
+// How a patch is made: a PDE solved (a blend, a chain; a fill closing a loop), a primary surface
+// typed by the scene, a Bézier patch minimising an energy (scene/patch_kinds.hpp).
+enum class PatchKind { Pde, Fill, Primary, Bezier };
 
 // coef · T(t) · g(v): one term of a primary surface; T and g are basis functions.
 struct PrimaryTerm {
@@ -103,7 +106,7 @@ struct Meets {
   // Version 4, the met patch is a pde patch (its end u0/u1 by atT1) or a Bézier patch (its
   // border sourceEdge in kBezierEdge's order); -1: atT1 names the edge t0/t1 (u0/u1).
   int sourceEdge = -1;
-  // Version 4, a fill (PatchKind::Pde with a loop): the part [from, to] of the fill's border
+  // Version 4, a fill (PatchKind::Fill): the part [from, to] of the fill's border
   // u = 0 (its v) that meets this edge; NaN: the target's whole border.
   double targetFrom = NAN, targetTo = NAN;
   // A fill's side: its part maps onto [v0, v1] through σ(w) = w - kFillEase sin(2πw)/2π, not
@@ -184,33 +187,68 @@ struct ComponentOperator {
   std::vector<double> values;
 };
 
+// What a pde patch carries (kind "pde", and "fill", which closes a loop of borders).
+struct PdeData {
+  std::array<ComponentOperator, 3> op;
+  PdeProblem pde;
+  Method method;  // "method" in the scene, default auto
+  // Version 3: the ends given by reference ([0] u0, [1] u1), and the typed ends' position
+  // expressions per coordinate (null: not typed), for the extra conditions of an end that
+  // asks less than the operator carries.
+  std::array<EndReference, 2> ends;
+  std::array<std::array<Expr, 3>, 2> typedPosition;
+  FillLoop fill;  // a fill's loop (version 4); its conditions are derived at solve time
+};
+
+// What a Bézier patch carries (seed 002).
+struct BezierData {
+  BezierProblem bezier;
+  // Version 4: the borders given by reference, in kBezierEdge's order. A patch whose four
+  // borders are given may omit its control_net (bezier.initial is then empty until
+  // deriveBorders builds it).
+  std::array<BorderReference, 4> borders;
+};
+
 struct Patch {
   std::string name;
-  std::string kindName;  // as the scene says: "pde", "ruled", "separable"
+  std::string kindName;  // as the scene says: "pde", "fill", "surface", "ruled", "separable", "bezier"
   // Primary only: its joins, one per edge and patch end: the scene's own `meets` first (when
   // given), then those of the version-3 ends that name it (scene/derived_ends.hpp), in the
   // drawn parametrisation (a surface trimmed along a curve has the curve at t = t0 = 0).
   std::vector<Meets> meets;
-  PatchKind kind = PatchKind::Pde;
-  std::array<ComponentOperator, 3> op;  // Pde only
-  PdeProblem pde;                       // Pde only
-  Method method;                        // Pde only: "method" in the scene, default auto
-  PrimarySurface primary;  // Primary only
-  BezierProblem bezier;    // Bezier only (seed 002)
-  // Pde only, version 3: the ends given by reference ([0] u0, [1] u1), and the typed ends'
-  // position expressions per coordinate (null: not typed), for the extra conditions of an
-  // end that asks less than the operator carries.
-  std::array<EndReference, 2> ends;
-  std::array<std::array<Expr, 3>, 2> typedPosition;
-  // Bezier only, version 4: the borders given by reference, in kBezierEdge's order. A patch
-  // whose four borders are given may omit its control_net (bezier.initial is then empty until
-  // deriveBorders builds it).
-  std::array<BorderReference, 4> borders;
-  // Pde only, version 4: a fill's loop (kind "fill"); its conditions are derived at solve time.
-  FillLoop fill;
+  PatchKind kind = PatchKind::Pde;  // set with setKind, which gives the patch that kind's data
   // The patches whose solved surfaces this one's conditions come from (chained ends, a fill's
   // borders): solveScene solves them first.
   std::vector<std::string> dependsOn;
+  // One payload, the kind's (scene/patch_kinds.hpp): PdeData for pde patches and fills.
+  std::variant<PdeData, PrimarySurface, BezierData> data;
+
+  void setKind(PatchKind k);
+  bool isFill() const { return kind == PatchKind::Fill; }
+  bool solvedAsPde() const { return kind == PatchKind::Pde || kind == PatchKind::Fill; }  // a fill is a pde patch too
+  // The kind's data by the names the fields had; asking for another kind's is an Internal error.
+  PdeData& pdeData();
+  const PdeData& pdeData() const;
+  BezierData& bezierData();
+  const BezierData& bezierData() const;
+  PrimarySurface& primary();
+  const PrimarySurface& primary() const;
+  std::array<ComponentOperator, 3>& op() { return pdeData().op; }
+  const std::array<ComponentOperator, 3>& op() const { return pdeData().op; }
+  PdeProblem& pde() { return pdeData().pde; }
+  const PdeProblem& pde() const { return pdeData().pde; }
+  Method& method() { return pdeData().method; }
+  const Method& method() const { return pdeData().method; }
+  std::array<EndReference, 2>& ends() { return pdeData().ends; }
+  const std::array<EndReference, 2>& ends() const { return pdeData().ends; }
+  std::array<std::array<Expr, 3>, 2>& typedPosition() { return pdeData().typedPosition; }
+  const std::array<std::array<Expr, 3>, 2>& typedPosition() const { return pdeData().typedPosition; }
+  FillLoop& fill() { return pdeData().fill; }
+  const FillLoop& fill() const { return pdeData().fill; }
+  BezierProblem& bezier() { return bezierData().bezier; }
+  const BezierProblem& bezier() const { return bezierData().bezier; }
+  std::array<BorderReference, 4>& borders() { return bezierData().borders; }
+  const std::array<BorderReference, 4>& borders() const { return bezierData().borders; }
 };
 
 struct Scene {
@@ -238,7 +276,7 @@ struct SolvedPatch {
   std::shared_ptr<const PdeProblem> problem;
   bool reused = false;  // the same problem as the cache's last solve of this patch: not re-solved
   uint64_t solveId = 0;  // with a cache, pde only: which solve made `surface` (a mesh made from it stays valid)
-  const PdeProblem& pde() const { return problem ? *problem : patch->pde; }
+  const PdeProblem& pde() const { return problem ? *problem : patch->pde(); }
 };
 
 // Throws Error(ParseError | InvalidField | UnknownName | NonFinite | TooLarge) with a field

@@ -67,10 +67,10 @@ void parseParameters(const json& j, Scene& scene, Resolver& r, int version) {
 // are evaluated where the surface is not drawn, so the certificate would pass a border that
 // hangs free. A part of the border (seed 002 Fig. 4's middle third) is allowed.
 void checkJoinInterval(const Patch& primary, const Meets& m, const Patch& target, const std::string& mp) {
-  const PrimarySurface& S = primary.primary;
+  const PrimarySurface& S = primary.primary();
   const bool given = !std::isnan(m.v0);
-  if (!given && target.kind != PatchKind::Pde) return;
-  const double a = given ? m.v0 : target.pde.v0, b = given ? m.v1 : target.pde.v1;
+  if (!given && !target.solvedAsPde()) return;
+  const double a = given ? m.v0 : target.pde().v0, b = given ? m.v1 : target.pde().v1;
   const double slack = 1e-12 * std::max({1.0, std::abs(S.v0), std::abs(S.v1)});
   if (a < S.v0 - slack || b > S.v1 + slack) {
     const auto num = [](double x) { std::ostringstream o; o << x; return o.str(); };
@@ -135,7 +135,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
     patch.kindName = kind;
     const PatchKindEntry* entry = findPatchKind(kind, scene.version);
     if (!entry) fail(ErrorCode::InvalidField, path + ".kind", "unknown kind '" + kind + "' (" + patchKindNames(scene.version) + ")");
-    patch.kind = entry->solvedAs;
+    patch.setKind(entry->solvedAs);
     entry->parse({pj, path, r, scene.version, bezierWork}, patch);
     scene.patches.push_back(std::move(patch));
   }
@@ -151,7 +151,7 @@ static Scene parseSceneUnchecked(const std::string& text) {
       if (!m.by.empty()) continue;  // derived from an end: its patch is that end's blend
       const Patch* target = scene.find(m.patch);
       const std::string mp = "patches[" + std::to_string(i) + "].meets";
-      if (!target || (target->kind != PatchKind::Pde && target->kind != PatchKind::Bezier))
+      if (!target || (!target->solvedAsPde() && target->kind != PatchKind::Bezier))
         fail(ErrorCode::UnknownName, mp + ".patch", "no pde or bezier patch named '" + m.patch + "'");
       if (m.alongU && target->kind != PatchKind::Bezier)
         fail(ErrorCode::InvalidField, mp + ".end", "pde patch '" + m.patch + "' has ends u0 and u1 only");

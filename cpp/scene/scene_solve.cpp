@@ -35,7 +35,7 @@ const Patch* Scene::firstBezier() const {
 
 const Patch* Scene::firstPde() const {
   for (const Patch& p : patches)
-    if (p.kind == PatchKind::Pde) return &p;
+    if (p.solvedAsPde()) return &p;
   return nullptr;
 }
 
@@ -136,9 +136,9 @@ bool sameMethod(const Method& a, const Method& b) {
 }
 
 SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> problem, const Method* method, SolveCache* cache) {
-  if (patch.kind != PatchKind::Pde) return solvePatch(patch, method, cache);
-  const PdeProblem& pde = problem ? *problem : patch.pde;
-  const Method& m = method ? *method : patch.method;
+  if (!patch.solvedAsPde()) return solvePatch(patch, method, cache);
+  const PdeProblem& pde = problem ? *problem : patch.pde();
+  const Method& m = method ? *method : patch.method();
   if (cache) {
     const auto it = cache->solved.find(patch.name);
     if (it != cache->solved.end() && sameMethod(it->second.method, m) && sameProblem(it->second.problem, pde)) {
@@ -159,7 +159,7 @@ SolvedPatch solveWith(const Patch& patch, std::shared_ptr<const PdeProblem> prob
         throw Error(ErrorCode::Singular, methodName(solution.used) + " missed the boundary conditions by " + numberText(missed) +
                                              " (relative): the data or the force are beyond what it can expand; try another method");
     }
-    if (patch.fill.given) checkFillRegular(patch, solution.surface);
+    if (patch.isFill()) checkFillRegular(patch, solution.surface);
     SolvedPatch out{&patch, std::move(solution.surface), solution.used, {}, 0.0, 0.0, problem, false};
     if (cache) {
       out.solveId = ++cache->solves;
@@ -195,20 +195,20 @@ SolvedPatch solvePatch(const Patch& patch, const Method* method, SolveCache* cac
   try {
     if (!patch.dependsOn.empty())
       throw Error(ErrorCode::InvalidField, "its conditions come from '" + patch.dependsOn.front() + "': solve it with the scene");
-    if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary), Method{}, {}, 0.0, 0.0};
+    if (patch.kind == PatchKind::Primary) return {&patch, primaryToSeparable(patch.primary()), Method{}, {}, 0.0, 0.0};
     if (patch.kind == PatchKind::Bezier) {
       std::unique_ptr<BezierSolver> own;
-      if (!cache) own = std::make_unique<BezierSolver>(patch.bezier);
-      const BezierSolver& solver = cache ? cache->bezier.get(patch.bezier) : *own;
-      SolvedPatch out{&patch, {}, Method{}, solver.solve(patch.bezier.initial), 0.0, 0.0};
+      if (!cache) own = std::make_unique<BezierSolver>(patch.bezier());
+      const BezierSolver& solver = cache ? cache->bezier.get(patch.bezier()) : *own;
+      SolvedPatch out{&patch, {}, Method{}, solver.solve(patch.bezier().initial), 0.0, 0.0};
       if (spansNoArea(out.controlNet))
         throw Error(ErrorCode::InvalidField, "its solved control net lies on a line or at a point: the surface has no area (give a net or borders that span one)");
-      out.surface = bezierToSeparable(patch.bezier.n, patch.bezier.m, out.controlNet);
-      out.energy = solver.energy(out.controlNet, patch.bezier.initial);
+      out.surface = bezierToSeparable(patch.bezier().n, patch.bezier().m, out.controlNet);
+      out.energy = solver.energy(out.controlNet, patch.bezier().initial);
       out.normalMisfit = solver.normalMisfit(out.controlNet);
       return out;
     }
-    MethodSolution m = solveWithMethod(patch.pde, method ? *method : patch.method, cache ? &cache->bases : nullptr);
+    MethodSolution m = solveWithMethod(patch.pde(), method ? *method : patch.method(), cache ? &cache->bases : nullptr);
     return {&patch, std::move(m.surface), m.used, {}, 0.0, 0.0};
   } catch (const Error& e) {
     throw Error(e.code(), "patch '" + patch.name + "': " + e.what());

@@ -36,7 +36,7 @@ Expr bernsteinPolynomial(const std::vector<double>& c) {
 
 // A Bézier border from the solved net: row (or column) `at` and its two neighbours inward.
 EdgeExprs bezierEdge(const SolvedPatch& sp, int edge, int derivatives) {
-  const BezierProblem& b = sp.patch->bezier;
+  const BezierProblem& b = sp.patch->bezier();
   const std::vector<Eigen::Vector3d>& net = sp.controlNet;
   const bool alongV = edge < 2;               // u0, u1 run along v (index j)
   const int across = alongV ? b.n : b.m;      // the degree across the border
@@ -66,7 +66,7 @@ EdgeExprs bezierEdge(const SolvedPatch& sp, int edge, int derivatives) {
 // The boundary slot ∂^d X_c/∂u^d of the problem a pde patch was solved for, at its edge u0 or
 // u1, when its method imposes the data exactly (the lift: modal, closed, reference); else null.
 const VExpansion* dataAt(const SolvedPatch& sp, int edge, int c, int d) {
-  if (sp.patch->kind != PatchKind::Pde || sp.surface.pointwise[c]) return nullptr;
+  if (!sp.patch->solvedAsPde() || sp.surface.pointwise[c]) return nullptr;
   const MethodKind kind = sp.used.kind;
   if (kind != MethodKind::Modal && kind != MethodKind::Closed && kind != MethodKind::Reference) return nullptr;
   const ComponentProblem& cp = sp.pde().component[c];

@@ -11,7 +11,7 @@ size_t referencedSurface(const Scene& scene, const std::string& name, const std:
     if (scene.patches[i].name == name) index = i;
   if (index == scene.patches.size()) fail(ErrorCode::UnknownName, path + ".surface", "no patch named '" + name + "'");
   const Patch& s = scene.patches[index];
-  if (s.kind != PatchKind::Primary || !s.primary.full[0] || !s.primary.full[1] || !s.primary.full[2])
+  if (s.kind != PatchKind::Primary || !s.primary().full[0] || !s.primary().full[1] || !s.primary().full[2])
     fail(ErrorCode::InvalidField, path + ".surface",
          "'" + name + "' is a " + s.kindName + " patch; " + referrer + " refers to a \"surface\" patch (expressions in t and v)");
   return index;

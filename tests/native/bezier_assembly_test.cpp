@@ -233,7 +233,7 @@ TEST_CASE("bezier normal fields: expressions are sampled as the point-by-point v
   patch["normals"] = {{"grid", {12, 9}}, {"field", {{"x", x}, {"y", y}, {"z", z}}}};
   doc["patches"] = nlohmann::json::array({patch});
   const Scene typed = parseScene(doc.dump());
-  const BezierNormalField& f = typed.patches[0].bezier.normals;
+  const BezierNormalField& f = typed.patches[0].bezier().normals;
   REQUIRE(f.vectors.size() == 13 * 10);
   const Expr ex = parseExpression(x, {}, AllowedVariables{true, true}), ey = parseExpression(y, {}, AllowedVariables{true, true}),
              ez = parseExpression(z, {}, AllowedVariables{true, true});

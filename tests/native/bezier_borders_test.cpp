@@ -98,7 +98,7 @@ const Patch& fillOf(const Scene& s) { return *s.find("fill"); }
 
 TEST_CASE("borders by reference: Fig. 4's hole, its outer rings derived from the strips") {
   const Scene scene = parseScene(holeScene(Hole{}).dump());
-  const BezierProblem& b = fillOf(scene).bezier;
+  const BezierProblem& b = fillOf(scene).bezier();
   // Fig. 4's net was built offline from the same surface over the same hole (u along x, v
   // along y): the Bézier form of z = 0.15x² - 0.1y² + 0.05xy. Both rings agree to rounding.
   const json fig4 = json::parse(readText(examplePath("wu2015-fig4.json")));
@@ -164,11 +164,11 @@ TEST_CASE("borders by reference: the fill follows a parameter of its strips") {
   for (json& p : j["patches"])
     if (p["kind"] == "surface") p["z"] = std::string(p["z"]).replace(0, 4, "a");
   REQUIRE(std::string(j["patches"][1]["z"]).rfind("a*", 0) == 0);
-  const std::vector<Eigen::Vector3d> before = fillOf(parseScene(j.dump())).bezier.initial;
+  const std::vector<Eigen::Vector3d> before = fillOf(parseScene(j.dump())).bezier().initial;
   CHECK(certify(j).ok);
   j["parameters"]["a"]["value"] = -0.4;
   const Scene after = parseScene(j.dump());
-  const BezierProblem& b = fillOf(after).bezier;
+  const BezierProblem& b = fillOf(after).bezier();
   double moved0 = 0, moved1 = 0;
   for (int j2 = 0; j2 <= 7; ++j2) {
     moved0 = std::max(moved0, (b.initial[b.index(0, j2)] - before[b.index(0, j2)]).norm());
@@ -275,7 +275,7 @@ TEST_CASE("borders by reference: a typed net keeps the rings of the edges not gi
   j["patches"][1].erase("meets");
   j["patches"][1]["v_range"] = {-0.5, 0.5};
   const Scene scene = parseScene(j.dump());
-  const BezierProblem& b = fillOf(scene).bezier;
+  const BezierProblem& b = fillOf(scene).bezier();
   double same = 0;
   for (int i = 0; i <= 7; ++i)
     for (int k = 0; k <= 7; ++k) {

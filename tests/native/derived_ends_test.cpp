@@ -211,7 +211,7 @@ TEST_CASE("by reference: an end that asks less than the operator carries gets th
   const json a = byReference(example("zhang-c2-ex1"), {{"u0", end("cylinder", "t0", "position")}, {"u1", end("sphere", "t0", "curvature")}});
   const Scene scene = parseScene(a.dump());
   const Patch& blend = *scene.find("blend");
-  for (int c = 0; c < 3; ++c) CHECK(blend.op[c].order == 6);
+  for (int c = 0; c < 3; ++c) CHECK(blend.op()[c].order == 6);
   const auto solved = solveScene(scene);
   const SeparableSurface& s = solvedNamed(solved, "blend").surface;
   double worst = 0.0;
@@ -297,7 +297,7 @@ TEST_CASE("by reference: blends between closed-form families stay closed form") 
     const Scene scene = parseScene(readText(examplePath(std::string(id) + ".json")));
     const auto solved = solveScene(scene);
     CHECK(methodName(solved.front().used) == "closed");
-    CHECK(boundaryError(solved.front().patch->pde, solved.front().surface) < 1e-12);
+    CHECK(boundaryError(solved.front().patch->pde(), solved.front().surface) < 1e-12);
   }
   // The square root of the T-joint's pipe is no family: the general methods take over.
   const Scene tjoint = parseScene(readText(examplePath("ref-pipe-tjoint.json")));

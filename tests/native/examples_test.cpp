@@ -43,7 +43,7 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
     }
     for (const SolvedPatch& sp : solved) {
       CAPTURE(sp.patch->name);
-      if (sp.patch->kind == PatchKind::Pde) {
+      if (sp.patch->solvedAsPde()) {
         // The problem solved: with the conditions derived from other patches (chains, fills).
         const PdeProblem& pde = sp.pde();
         CHECK(boundaryError(pde, sp.surface) < 1e-10);
@@ -56,7 +56,7 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
         // So do the aeroplane's wing and stabiliser root blends, whose rims are pointed at both
         // tips (residual 0.91 next to the tips, docs/chains-and-fills.md); their joins are
         // judged like every other.
-        else if (!sp.patch->fill.given &&
+        else if (!sp.patch->isFill() &&
                  !(id == "you2004-fig8d" && (sp.patch->name.rfind("root", 0) == 0 || sp.patch->name.rfind("stabRoot", 0) == 0)))
           CHECK(interiorResidual(pde, sp.surface).relative < 1e-9);
       }

@@ -133,8 +133,8 @@ TEST_CASE("expression graph: one budget per scene, summed over its blends, stops
   const std::string dir = pdesurf::testing::examplePath("../tests/hostile/expressions/");
   // One 450-factor surface met along a curve with curvature: derived (about 25 000 nodes).
   const Scene one = parseScene(pdesurf::testing::readText(dir + "product-450-curve.json"));
-  CHECK(one.patches[2].primary.trimmed);
-  CHECK(one.patches[2].primary.pointwisePartials[2].size() == 6);
+  CHECK(one.patches[2].primary().trimmed);
+  CHECK(one.patches[2].primary().pointwisePartials[2].size() == 6);
   // 31 of them in one scene: refused at the end where the budget runs out (every end is
   // derived before any blend's conditions are written), in a fraction of a second.
   const auto t0 = std::chrono::steady_clock::now();

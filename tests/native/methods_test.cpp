@@ -19,7 +19,7 @@ namespace {
 
 struct Loaded {
   Scene scene;
-  const PdeProblem& problem() const { return scene.firstPde()->pde; }
+  const PdeProblem& problem() const { return scene.firstPde()->pde(); }
 };
 
 Loaded load(const std::string& file) { return {parseScene(readText(examplePath(file)))}; }
@@ -76,7 +76,7 @@ TEST_CASE("reference: equals the closed form when family terms are marked genera
     for (auto& side : comp)
       for (auto& slot : side) slot = "general(" + slot.get<std::string>() + ")";
   const Scene scene = parseScene(j.dump());
-  const PdeProblem& p = scene.firstPde()->pde;
+  const PdeProblem& p = scene.firstPde()->pde();
   REQUIRE(hasGeneralTerms(p));
   PdeProblem restored;
   REQUIRE(restoreFamilies(p, &restored));
@@ -136,8 +136,8 @@ TEST_CASE("general forces: an expression force matches the same force in closed 
   j["patches"][0]["force"]["x"] = "general(p0*(1 + eta*u^2)*cos(v))";
   j["patches"][0]["force"]["y"] = "general(p0*(1 + eta*u^2)*sin(v))";
   const Scene generalScene = parseScene(j.dump());
-  const PdeProblem& p = generalScene.firstPde()->pde;
-  const SeparableSurface exact = solve(closedScene.firstPde()->pde, "closed");
+  const PdeProblem& p = generalScene.firstPde()->pde();
+  const SeparableSurface exact = solve(closedScene.firstPde()->pde(), "closed");
   CHECK(relativeError(exact, solve(p, "modal:8"), 40, 40) < 1e-12);
   // auto stops refining once the surface changes by less than 1e-9; the force's u-dependence
   // goes through a degree-16 interpolant, whose rounding shows at ~1e-11.

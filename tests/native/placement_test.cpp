@@ -130,8 +130,8 @@ TEST_CASE("placement: whole quarter turns are exact and keep the surface's terms
   const Scene before = parseScene(scene.dump());
   patchNamed(scene, "sphere")["placement"] = {{"rotate", {0, 0, 90}}};
   const Scene after = parseScene(scene.dump());
-  const auto& a = before.find("sphere")->primary;
-  const auto& b = after.find("sphere")->primary;
+  const auto& a = before.find("sphere")->primary();
+  const auto& b = after.find("sphere")->primary();
   CHECK(b.terms[0].size() == a.terms[1].size());  // x' = -y
   CHECK(b.terms[1].size() == a.terms[0].size());  // y' = x
   CHECK(b.terms[2].size() == a.terms[2].size());

@@ -194,7 +194,7 @@ TEST_CASE("random blends by reference keep every promise at their joins, on open
     }
     const SolvedPatch& blend = solved.front();
     if (blend.used.kind != MethodKind::Closed) ++general;
-    const PdeResidual res = interiorResidual(blend.patch->pde, blend.surface);
+    const PdeResidual res = interiorResidual(blend.patch->pde(), blend.surface);
     CAPTURE(methodName(blend.used));
     CHECK(res.relative < 1e-6);  // measured worst 1.5e-7 over 200 such scenes
     worstResidual = std::max(worstResidual, res.relative);

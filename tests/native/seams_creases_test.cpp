@@ -38,7 +38,7 @@ TEST_CASE("every fill of every example closes on itself to rounding, G1 across i
     const SceneReport r = checkScene(scene, solved, 0);
     int fills = 0;
     for (const SolvedPatch& sp : solved) {
-      if (!sp.patch->fill.given) continue;
+      if (!sp.patch->isFill()) continue;
       ++fills;
       CAPTURE(sp.patch->name);
       const JoinResult& seam = seamOf(r, sp.patch->name);

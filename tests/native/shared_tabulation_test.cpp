@@ -66,7 +66,7 @@ TEST_CASE("the interior residual tabulated once per grid line is the point-by-po
     INFO(id);
     const Scene scene = parseScene(readText(examplePath(std::string(id) + ".json")));
     for (const SolvedPatch& sp : solveScene(scene)) {
-      if (sp.patch->kind != PatchKind::Pde) continue;
+      if (!sp.patch->solvedAsPde()) continue;
       INFO(sp.patch->name);
       ++patches;
       const PdeProblem& p = sp.pde();
