@@ -17,7 +17,7 @@ export function createShareFeature({ viewer, panel, status, hooks }) {
     panel.showLinkLength(url.length);
     const warning = longLinkWarning(url.length);
     // Leave an error (a failed solve, a bad link) alone: it says more.
-    if (!hooks.lastError && !hooks.notice && (warning || long)) {
+    if (!status.showsError() && (warning || long)) {
       if (warning) status.warn(`${summary}; ${warning}`);
       else status.info(summary);
     }

@@ -42,5 +42,9 @@ export function createStatus(el) {
     text() {
       return el.textContent;
     },
+    /** Whether the line says what went wrong (an error is left alone by passing notes). */
+    showsError() {
+      return el.classList.contains('error');
+    },
   };
 }
