@@ -94,6 +94,11 @@ describe('building a model in the page', { skip }, () => {
     assert.deepEqual(built.patches.map((p) => p.name), ['annulus1', 'cylinder1', 'blend1']);
     assert.deepEqual(built.patches[2].ends.u0, { surface: 'annulus1', at: 't0', continuity: 'curvature', power: 1 });
     assert.equal((await hooks(page)).lastError, null);
+    // The blend meets both surfaces' borders: a copy would meet them too, so it offers none.
+    const copyBlend = page.locator('#panel [data-patch="blend1"] [data-action="duplicate"]');
+    assert.ok(await copyBlend.isDisabled());
+    assert.match(await copyBlend.getAttribute('title'), /^blend1 meets annulus1, cylinder1: a copy would meet the same edges/);
+    assert.ok(await page.locator('#panel [data-patch="cylinder1"] [data-action="duplicate"]').isEnabled());
     await shoot(page, 'build-picked-1280.png');
     const { scene: linked, report } = checkLink(await waitLink(page));
     assert.deepEqual(linked.patches.map((p) => p.name), ['annulus1', 'cylinder1', 'blend1']);

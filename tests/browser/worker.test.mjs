@@ -13,9 +13,12 @@ import { watchFrames } from './gizmo-drag.mjs';
 
 const scene = JSON.parse(fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig2a.json'), 'utf8'));
 
-async function linkTo(method) {
+// copies: more blends like the first (each solved on its own), for a first solve that surely
+// outlasts the cancel limit (one blend takes about 0.6 s in node, faster than it did).
+async function linkTo(method, copies = 1) {
   const s = structuredClone(scene);
   s.patches[0].method = method;
+  for (let c = 2; c <= copies; c++) s.patches.push({ ...structuredClone(s.patches[0]), name: `blend${c}` });
   return `/web/#${await encodeState({ scene: s, grid: { nu: 64, nv: 64 } })}`;
 }
 
@@ -59,8 +62,8 @@ describe('solving off the main thread', { skip }, () => {
   });
 
   it('cancels a long solve when the next edit has waited past the limit', async () => {
-    const page = await h.open(await linkTo('pseudo-spectral:1000'), { wait: false });
-    // The first solve (about a second or more) is running: move r0 now.
+    const page = await h.open(await linkTo('pseudo-spectral:1000', 3), { wait: false });
+    // The first solve (three slow blends: about 1.6 s in node, more in the page) is running: move r0 now.
     await page.waitForFunction(() => document.getElementById('status').classList.contains('busy'), null, { timeout: 10_000 });
     await page.locator('#panel [data-param="r0"] input').first().fill('2.2');
     await page.waitForFunction(() => window.__pdesurf.ready, null, { timeout: 30_000 });

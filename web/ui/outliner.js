@@ -62,14 +62,21 @@ export function buildOutliner(gui, handlers) {
     eye.addEventListener('change', () => handlers.onVisible(patch.name, eye.checked));
     const tools = document.createElement('span');
     tools.className = 'outliner-tools';
+    // What meets another patch's edge cannot be copied: its copy would meet that edge too
+    // (three sheets; web/state/scene-build.js duplicatePatch says the same).
+    const from = upstreamOf(patch);
+    const copy = button('❏', `duplicate ${patch.name}`, () => handlers.onDuplicate(patch.name), 'duplicate');
+    if (from.length) {
+      copy.disabled = true;
+      copy.title = `${patch.name} meets ${from.join(', ')}: a copy would meet the same edges (detach it first to duplicate it)`;
+    }
     tools.append(
       button('◎', `select ${patch.name}`, () => handlers.onSelect(patch.name), 'select'),
-      button('❏', `duplicate ${patch.name}`, () => handlers.onDuplicate(patch.name), 'duplicate'),
+      copy,
       button('✕', `delete ${patch.name}`, () => (dependents.length ? ask(li, patch.name, dependents) : handlers.onDelete(patch.name)), 'delete'),
     );
     li.append(eye, kind, name, tools);
     // The chain: what this patch's conditions come from (they are re-derived when those change).
-    const from = upstreamOf(patch);
     if (from.length) {
       const deps = document.createElement('span');
       deps.className = 'outliner-deps';
