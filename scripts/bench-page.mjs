@@ -6,6 +6,8 @@
 // attribute update, render) against the worker's own solve time, at 64², 256² and 1024²; and
 // the frames painted while a surface is dragged with the placement gizmo and its fillet
 // re-solves live (ref-sphere-fillet at 64², one pointer move per frame).
+// Beside the aeroplane's page figures, the same solves in a Chromium worker with no page around
+// it (bench/pages/solve-worker.js): what the page adds to the solver's own time.
 // Run by scripts/bench after the builds; needs build/web (scripts/build-web.mjs).
 import { startHarness } from '../tests/browser/harness.mjs';
 import { firstVisit } from '../tests/browser/first-visit.mjs';
@@ -51,6 +53,24 @@ async function modelEdit(page, param, runs = 7) {
   return { page: m('pageMs'), worker: m('workerMs'), certified: m('certifiedMs'), report: m('reportMs') };
 }
 
+// The aeroplane's slider solves in a Chromium worker of its own (bench/pages/solve-worker.js).
+async function aloneInWorker(h, params) {
+  const page = await h.context.newPage();
+  try {
+    await page.goto(`${h.base}/bench/pages/bare-three.html`);
+    const scene = await (await fetch(`${h.base}/examples/you2004-fig8d.json`)).text();
+    const out = await page.evaluate(([text, names]) => new Promise((resolve, reject) => {
+      const w = new Worker('/bench/pages/solve-worker.js', { type: 'module' });
+      w.onmessage = ({ data }) => (data.error ? reject(new Error(data.error)) : resolve(data));
+      w.onerror = (e) => reject(new Error(e.message || 'the worker did not start'));
+      w.postMessage({ scene: text, params: names });
+    }), [scene, params]);
+    return out;
+  } finally {
+    await page.close();
+  }
+}
+
 const h = await startHarness();
 try {
   const bare = [];
@@ -76,13 +96,16 @@ try {
   for (let k = 0; k < 5; k++) cold.push(await firstVisit(`${h.base}/app/#example=you2004-fig8d`, () => window.__pdesurf?.firstFrameAt));
   console.log(`\nthe aeroplane (you2004-fig8d, 22 patches) cold: first frame ${median(cold.map((r) => r.frameMs)).toFixed(0)} ms (${ms(cold)}), ${(median(cold.map((r) => r.frameMs)) / b).toFixed(2)}× the bare page; ` +
     `its first solve in the worker ${median(cold.map((r) => r.workerMs)).toFixed(0)} ms (${ms(cold, 'workerMs')})`);
+  const SLIDERS = ['wing_x', 'span', 'tip_lift', 'h', 'R'];
+  const alone = await aloneInWorker(h, SLIDERS);
   const plane = await h.open('/app/#example=you2004-fig8d');
   await plane.waitForFunction(() => window.__pdesurf.lastReport, null, { timeout: 60_000 });
-  console.log('its sliders, edit to drawn and to certified (the report after the mesh) [ms, median of 7, 64²]');
-  console.log(`${'slider'.padEnd(10)} ${'drawn'.padStart(8)} ${'worker'.padStart(8)} ${'ratio'.padStart(6)} ${'certified'.padStart(10)} ${'report'.padStart(8)}`);
-  for (const param of ['wing_x', 'span', 'tip_lift', 'h', 'R']) {
+  console.log('its sliders, edit to drawn and to certified (the report after the mesh) [ms, median of 7, 64²];');
+  console.log('"alone": the same solves in a Chromium worker with no page around it (median of 21)');
+  console.log(`${'slider'.padEnd(10)} ${'drawn'.padStart(8)} ${'worker'.padStart(8)} ${'alone'.padStart(8)} ${'ratio'.padStart(6)} ${'certified'.padStart(10)} ${'report'.padStart(8)}`);
+  for (const param of SLIDERS) {
     const r = await modelEdit(plane, param);
-    console.log(`${param.padEnd(10)} ${r.page.toFixed(0).padStart(8)} ${r.worker.toFixed(0).padStart(8)} ${(r.page / r.worker).toFixed(2).padStart(6)} ${r.certified.toFixed(0).padStart(10)} ${r.report.toFixed(0).padStart(8)}`);
+    console.log(`${param.padEnd(10)} ${r.page.toFixed(0).padStart(8)} ${r.worker.toFixed(0).padStart(8)} ${alone[param].toFixed(0).padStart(8)} ${(r.page / r.worker).toFixed(2).padStart(6)} ${r.certified.toFixed(0).padStart(10)} ${r.report.toFixed(0).padStart(8)}`);
   }
   const fillet = await h.open('/app/#example=ref-sphere-fillet');
   // The same view orbited (renders only) is the baseline: under a software GL the frame's
