@@ -72,13 +72,6 @@ val endsOf(const Patch& p) {
   return ends;
 }
 
-std::vector<double> flattenExact(const std::vector<Eigen::Vector3d>& pts) {
-  std::vector<double> out;
-  out.reserve(pts.size() * 3);
-  for (const Eigen::Vector3d& p : pts) out.insert(out.end(), {p.x(), p.y(), p.z()});
-  return out;
-}
-
 std::vector<float> flatten(const std::vector<Eigen::Vector3d>& pts) {
   std::vector<float> out;
   for (const auto& q : pts) out.insert(out.end(), {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z())});
@@ -91,8 +84,8 @@ void setBezierExtras(val& p, const SolvedPatch& sp) {
   const BezierProblem& b = sp.patch->bezier();
   p.set("netSize", val::array(std::vector<int>{b.n + 1, b.m + 1}));
   // The nets in doubles: a detached border is typed from them exactly (web/state/patch-delete.js).
-  p.set("controlNet", copyOut(flattenExact(sp.controlNet)));
-  p.set("initialNet", copyOut(flattenExact(b.initial)));
+  p.set("controlNet", copyOut(wasm::flattenExact(sp.controlNet)));
+  p.set("initialNet", copyOut(wasm::flattenExact(b.initial)));
   p.set("energy", sp.energy);
   p.set("normalMisfit", sp.normalMisfit);
   p.set("lambda", b.lambda);

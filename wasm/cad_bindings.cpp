@@ -35,10 +35,7 @@ val faceOf(const PatchFit& f) {
   o.set("countV", s.countV);
   o.set("knotsU", copyOut(s.knotsU));
   o.set("knotsV", copyOut(s.knotsV));
-  std::vector<double> poles;
-  poles.reserve(s.poles.size() * 3);
-  for (const Eigen::Vector3d& p : s.poles) poles.insert(poles.end(), {p.x(), p.y(), p.z()});
-  o.set("poles", copyOut(poles));
+  o.set("poles", copyOut(wasm::flattenExact(s.poles)));
   o.set("closedV", s.closedV);
   val degenerate = val::array();
   for (bool d : s.degenerate) degenerate.call<void>("push", d);

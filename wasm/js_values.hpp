@@ -3,6 +3,7 @@
 #pragma once
 #include <emscripten/val.h>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <cmath>
 #include <new>
@@ -18,6 +19,14 @@ namespace pdesurf::wasm {
 template <class T>
 emscripten::val copyOut(const std::vector<T>& v) {
   return emscripten::val(emscripten::typed_memory_view(v.size(), v.data())).call<emscripten::val>("slice");
+}
+
+// Points as x, y, z, x, y, z, … in doubles (a copy for JS keeps them exact).
+inline std::vector<double> flattenExact(const std::vector<Eigen::Vector3d>& pts) {
+  std::vector<double> out;
+  out.reserve(pts.size() * 3);
+  for (const Eigen::Vector3d& p : pts) out.insert(out.end(), {p.x(), p.y(), p.z()});
+  return out;
 }
 
 // JSON as a JS value (objects, arrays, strings, numbers, booleans, null), as JSON.parse of its

@@ -19,12 +19,6 @@ constexpr const char* kNurbsCurveUuid = "4ED7D4DD-E947-11d3-BFE5-0010830122F0";
 constexpr const char* kNurbsSurfaceUuid = "4ED7D4DE-E947-11d3-BFE5-0010830122F0";
 constexpr const char* kBrepUuid = "60B5DBC5-E660-11d3-BFE4-0010830122F0";
 
-struct Curve2 {
-  int degree = 1;
-  std::vector<double> knots;  // clamped
-  std::vector<Eigen::Vector2d> poles;
-};
-
 struct Trim {
   int curve = 0, edge = -1, v0 = 0, v1 = 0, loop = 0;
   bool rev3d = false;
@@ -38,7 +32,7 @@ struct Edge {
 };
 
 // A curve run the other way over the same parameter interval.
-Curve2 reversed(Curve2 c) {
+BrepPcurve reversed(BrepPcurve c) {
   const double a = c.knots.front(), b = c.knots.back();
   std::reverse(c.poles.begin(), c.poles.end());
   std::reverse(c.knots.begin(), c.knots.end());
@@ -46,15 +40,15 @@ Curve2 reversed(Curve2 c) {
   return c;
 }
 
-Curve2 line(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  Curve2 c;
+BrepPcurve line(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  BrepPcurve c;  // degree 1
   c.knots = {0, 0, 1, 1};
   c.poles = {a, b};
   return c;
 }
 
 // Where a curve in (u, v) lies on the surface's box: a side, an iso-line inside, or neither.
-int isoOf(const Curve2& c, const BSplineSurface& s) {
+int isoOf(const BrepPcurve& c, const BSplineSurface& s) {
   const auto all = [&](int axis, double x) {
     return std::all_of(c.poles.begin(), c.poles.end(), [&](const Eigen::Vector2d& p) { return p[axis] == x; });
   };
@@ -165,10 +159,9 @@ class BodyWriter {
   void addFace(int loop, int f) {
     const BSplineSurface& s = faces_[size_t(f)];
     std::vector<Trim> trims;
-    std::vector<Curve2> curves;
+    std::vector<BrepPcurve> curves;
     for (const BrepEdgeUse& use : surfaceLoop(t_, size_t(f))) {
-      const BrepPcurve pc = usePcurve(s, t_, f, use);
-      Curve2 c{pc.degree, pc.knots, pc.poles};
+      BrepPcurve c = usePcurve(s, t_, f, use);  // runs with the edge's curve; a trim runs with the loop
       if (!use.forward) c = reversed(c);
       Trim tr;
       tr.edge = edgeOf(use.edge);
@@ -193,7 +186,7 @@ class BodyWriter {
     }
     // A collapsed border has no edge: a singular trim along it, at the vertex there.
     std::vector<Trim> closedTrims;
-    std::vector<Curve2> closedCurves;
+    std::vector<BrepPcurve> closedCurves;
     for (size_t k = 0; k < trims.size(); ++k) {
       closedTrims.push_back(trims[k]);
       closedCurves.push_back(curves[k]);
@@ -232,7 +225,7 @@ class BodyWriter {
     typeTrims();
     w.version(3, 3);
     writeObjects(w, curves2_.size(), [&](size_t k) {
-      const Curve2& c = curves2_[k];
+      const BrepPcurve& c = curves2_[k];
       std::vector<double> xy;
       for (const Eigen::Vector2d& p : c.poles) xy.insert(xy.end(), {p.x(), p.y()});
       writeCurve(w, 2, c.degree, c.knots, xy.data(), c.poles.size());
@@ -263,7 +256,7 @@ class BodyWriter {
     }, nothing);
     writeRecords(w, 0, trims_.size(), [&](int k) {
       const Trim& tr = trims_[size_t(k)];
-      const Curve2& c = curves2_[size_t(tr.curve)];
+      const BrepPcurve& c = curves2_[size_t(tr.curve)];
       w.i32(k), w.i32(tr.curve);
       w.interval(c.knots.front(), c.knots.back());
       w.i32(tr.edge), w.i32(tr.v0), w.i32(tr.v1), w.i32(tr.rev3d ? 1 : 0), w.i32(tr.type), w.i32(tr.iso), w.i32(tr.loop);
@@ -313,7 +306,7 @@ class BodyWriter {
   std::vector<Vertex> vertices_;
   std::vector<Edge> edges_;
   std::vector<Trim> trims_;
-  std::vector<Curve2> curves2_;
+  std::vector<BrepPcurve> curves2_;
   std::vector<std::vector<int>> loops_;
 };
 

@@ -59,7 +59,6 @@ void parseFillPatch(const json& j, const std::string& path, const Resolver& r, i
   if (version < 4) fail(ErrorCode::InvalidField, path + ".kind", "a fill needs scene version 4");
   allowOnly(j, path, {"name", "kind", "borders", "continuity", "centre", "normal", "height", "operator", "force", "method"});
   FillLoop& fill = patch.fill();
-  fill.given = true;
   fill.path = path;
   const json& borders = require(j, "borders", path);
   if (!borders.is_array()) fail(ErrorCode::InvalidField, path + ".borders", "expected an array of borders");

@@ -155,7 +155,6 @@ struct LoopBorder {
 // patches. u = 0 is the loop (v in [0, 2π], border k on [2πk/N, 2π(k+1)/N]); u = 1 collapses to
 // a centre point with a tangent plane. Order 2 (position) or 4 (tangency along every side).
 struct FillLoop {
-  bool given = false;
   std::vector<LoopBorder> borders;
   Continuity continuity = Continuity::Tangency;
   bool centreGiven = false, normalGiven = false;
