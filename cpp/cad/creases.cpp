@@ -6,11 +6,13 @@
 
 #include "basis/general_function.hpp"
 #include "expr/program.hpp"
+#include "expr/spline.hpp"
 
 namespace pdesurf {
 namespace {
 
-// Arguments of abs and sign that depend on v only, each distinct node once.
+// Arguments of abs and sign that depend on v only, each distinct node once; a B-spline
+// function of v contributes its argument minus each knot where it is only C0.
 void collectKinkArguments(const Expr& root, std::unordered_set<const ExprNode*>& seen, std::vector<Expr>& out) {
   std::vector<const Expr*> stack{&root};
   while (!stack.empty()) {
@@ -18,6 +20,8 @@ void collectKinkArguments(const Expr& root, std::unordered_set<const ExprNode*>&
     stack.pop_back();
     if (!e || !seen.insert(e.get()).second) continue;
     if (e->op == ExprNode::Op::Call && (e->fn == ExprFn::Abs || e->fn == ExprFn::Sign) && e->a->vars == 1) out.push_back(e->a);
+    if (e->op == ExprNode::Op::Spline && e->a->vars == 1)
+      for (double knot : e->spline->kinks()) out.push_back(subtract(e->a, constant(knot)));
     stack.push_back(&e->a);
     stack.push_back(&e->b);
   }
@@ -63,6 +67,8 @@ std::vector<double> findCreases(const SeparableSurface& s, bool* kinkAtEnds) {
   for (const auto& terms : s.component)
     for (const SeparableTerm& t : terms)
       if (t.g.family == Family::General) collectKinkArguments(t.g.general->expr(), seen, arguments);
+  for (const Expr& e : s.pointwise)  // a B-spline surface's v-curves live in its pointwise part
+    if (e) collectKinkArguments(e, seen, arguments);
   std::vector<double> found;
   if (!arguments.empty()) zeros(arguments, s.v0, s.v1, found);
   std::sort(found.begin(), found.end());

@@ -49,6 +49,11 @@ constexpr double kEndScale = 100;
 // predecessors' terms grows quadratically, and 64 patches each under the per-patch budget
 // took minutes (issue 38). Counted while building, as kDerivedNodes.
 constexpr size_t kSceneDerivedNodes = size_t{1} << 20;
+// A "surface" given as NURBS (scene/nurbs_json.hpp): its degree in each direction (Open
+// CASCADE's own maximum) and its control points. Each point costs one B-spline evaluation per
+// sample of the surface, so 64² points at 64² samples stay ~0.1 s to draw natively.
+constexpr int kNurbsDegree = 25;
+constexpr size_t kNurbsPoints = 4096;
 // A derived condition's text (shown in the page, typed by detach) is elided past this.
 constexpr size_t kDerivedTextChars = 2000;
 

@@ -8,6 +8,7 @@
 
 #include "expr/budget.hpp"
 #include "expr/program.hpp"
+#include "expr/spline.hpp"
 
 namespace pdesurf {
 
@@ -47,10 +48,13 @@ Table& table() {
 
 constexpr uint64_t kTreeSaturated = uint64_t{1} << 62;
 
-Expr intern(Op op, uint8_t sub, double value, const Expr& a, const Expr& b) {
+Expr intern(Op op, uint8_t sub, double value, const Expr& a, const Expr& b, std::shared_ptr<const SplineFn> fn = nullptr) {
   ExprBudget::charge();
   uint64_t bits = 0;
   std::memcpy(&bits, &value, sizeof bits);
+  // A spline node is its function's: the node keeps the function alive, so while an entry's
+  // node lives no other function can take its address.
+  if (op == Op::Spline) bits = reinterpret_cast<uintptr_t>(fn.get());
   Table& t = table();
   std::weak_ptr<const ExprNode>& slot = t.map[Key{static_cast<uint8_t>(op), sub, bits, a.get(), b.get()}];
   if (Expr live = slot.lock()) return live;
@@ -59,6 +63,7 @@ Expr intern(Op op, uint8_t sub, double value, const Expr& a, const Expr& b) {
   n->value = value;
   if (op == Op::Var) n->var = static_cast<ExprVar>(sub), n->vars = static_cast<uint8_t>(1u << sub);
   if (op == Op::Call) n->fn = static_cast<ExprFn>(sub);
+  n->spline = std::move(fn);
   n->a = a;
   n->b = b;
   for (const Expr& c : {a, b})
@@ -157,6 +162,11 @@ Expr call(ExprFn f, const Expr& a) {
   return intern(Op::Call, static_cast<uint8_t>(f), 0.0, a, nullptr);
 }
 
+Expr spline(std::shared_ptr<const SplineFn> f, const Expr& a) {
+  if (a->op == Op::Const) return constant(f->eval(a->value));
+  return intern(Op::Spline, 0, 0.0, a, nullptr, std::move(f));
+}
+
 const char* exprFnName(ExprFn f) {
   static const char* names[] = {"sqrt", "exp", "log", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "abs", "sign", "general"};
   return names[static_cast<int>(f)];
@@ -205,6 +215,7 @@ double walk(const ExprNode& e, const double* vars) {
     case Op::Div: return walk(*e.a, vars) / walk(*e.b, vars);
     case Op::Pow: return powerValue(walk(*e.a, vars), *e.b, e.b->op == Op::Const ? e.b->value : walk(*e.b, vars));
     case Op::Call: return applyFn(e.fn, walk(*e.a, vars));
+    case Op::Spline: return e.spline->eval(walk(*e.a, vars));
   }
   return NAN;
 }

@@ -24,16 +24,19 @@ enum class ExprVar { V = 0, U = 1 };
 enum class ExprFn { Sqrt, Exp, Log, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Abs, Sign, General };
 
 struct ExprNode;
+class SplineFn;
 using Expr = std::shared_ptr<const ExprNode>;
 class ExprProgram;
 
 // Made only by the builders below (interned); read-only once made.
 struct ExprNode {
-  enum class Op { Const, Var, Neg, Add, Sub, Mul, Div, Pow, Call } op = Op::Const;
+  // Spline: spline(a), a piecewise polynomial in B-spline form (expr/spline.hpp).
+  enum class Op { Const, Var, Neg, Add, Sub, Mul, Div, Pow, Call, Spline } op = Op::Const;
   double value = 0.0;       // Const
   ExprVar var = ExprVar::V; // Var
   ExprFn fn = ExprFn::Sqrt; // Call
   Expr a, b;                // operands
+  std::shared_ptr<const SplineFn> spline;  // Spline
   // Facts of the graph below this node, set when it is made.
   uint8_t vars = 0;         // bit 0: depends on v, bit 1: on u
   uint32_t depth = 1;       // longest path to a leaf, in nodes
@@ -55,6 +58,8 @@ Expr multiply(const Expr& a, const Expr& b);
 Expr divide(const Expr& a, const Expr& b);
 Expr power(const Expr& a, const Expr& b);
 Expr call(ExprFn f, const Expr& a);
+// f(a) for a B-spline function f: nodes are interned on f's identity.
+Expr spline(std::shared_ptr<const SplineFn> f, const Expr& a);
 
 const char* exprFnName(ExprFn f);
 bool exprFnFromName(const std::string& name, ExprFn* out);

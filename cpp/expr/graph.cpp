@@ -2,6 +2,8 @@
 // topological order, each node's result kept for its parents (memoised per call).
 #include "expr/graph.hpp"
 
+#include "expr/spline.hpp"
+
 #include <unordered_map>
 #include <unordered_set>
 
@@ -50,6 +52,7 @@ Expr substitute(const Expr& e, ExprVar var, const Expr& by) {
       case Op::Div: r = divide(sub(x->a), sub(x->b)); break;
       case Op::Pow: r = power(sub(x->a), sub(x->b)); break;
       case Op::Call: r = call(x->fn, sub(x->a)); break;
+      case Op::Spline: r = spline(x->spline, sub(x->a)); break;
       case Op::Const: r = x; break;
     }
     done.emplace(x.get(), std::move(r));
@@ -99,6 +102,8 @@ Expr rule(const Expr& e, const Expr& da, const Expr& db, ExprVar var) {
       }
       return multiply(outer, da);
     }
+    case Op::Spline:  // a piecewise constant's derivative is 0 (as sign's, between its jumps)
+      return e->spline->derivative() ? multiply(spline(e->spline->derivative(), a), da) : constant(0.0);
   }
   return constant(0.0);
 }

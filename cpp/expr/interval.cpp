@@ -1,5 +1,7 @@
 #include "expr/interval.hpp"
 
+#include "expr/spline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -158,6 +160,11 @@ Interval IntervalProgram::run(const Interval* vars) const {
       case Op::Div: r = divide(a, b); break;
       case Op::Pow: r = power(a, *n->b, b); break;
       case Op::Call: r = call(n->fn, a); break;
+      case Op::Spline: {  // the hull of the coefficients on the pieces a spans
+        double lo, hi;
+        r = a.bounded() && n->spline->range(a.lo, a.hi, &lo, &hi) ? widen(lo, hi) : kWhole;
+        break;
+      }
     }
     values_[k] = r;
   }

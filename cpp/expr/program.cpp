@@ -1,5 +1,7 @@
 #include "expr/program.hpp"
 
+#include "expr/spline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -50,7 +52,8 @@ void ExprProgram::compile(const std::vector<const ExprNode*>& roots) {
   code_.reserve(order.size());
   for (size_t k = 0; k < order.size(); ++k) {
     const ExprNode& n = *order[k];
-    Instruction ins{n.op, n.fn, n.var, false, n.value, 0, 0, 0};
+    Instruction ins{n.op, n.fn, n.var, false, n.value, n.spline.get(), 0, 0, 0};
+    if (n.spline) splines_.push_back(n.spline);
     if (n.a) ins.a = reg[index[n.a.get()]];
     if (n.b) ins.b = reg[index[n.b.get()]];
     if (n.op == Op::Pow && n.b->op == Op::Const && (n.b->value == 2 || n.b->value == 3)) ins.smallPower = true, ins.value = n.b->value;
@@ -137,6 +140,7 @@ void ExprProgram::runAll(const double* v, const double* u, size_t n, double* con
           else map2(o, a, b, m, [](double x, double y) { return std::pow(x, y); });
           break;
         case Op::Call: callFn(ins.fn, o, a, m); break;
+        case Op::Spline: map1(o, a, m, [f = ins.spline](double x) { return f->eval(x); }); break;
       }
     }
     for (size_t r = 0; r < rootRegister_.size(); ++r) {

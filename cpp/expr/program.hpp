@@ -4,6 +4,7 @@
 // instruction, which the compiler can vectorise), instead of walking the graph per point.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "expr/expr.hpp"
@@ -31,10 +32,12 @@ class ExprProgram {
     ExprVar var;
     bool smallPower;  // Pow by the constant 2 or 3: multiplied out, as evaluate() does
     double value;     // Const; the exponent of a small power
+    const SplineFn* spline;  // Spline: its function (kept alive by splines_)
     uint32_t out, a, b;
   };
   void compile(const std::vector<const ExprNode*>& roots);
   std::vector<Instruction> code_;
+  std::vector<std::shared_ptr<const SplineFn>> splines_;  // the Spline instructions' functions, kept alive
   std::vector<uint32_t> rootRegister_;
   uint32_t registers_ = 0;
 };

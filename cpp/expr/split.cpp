@@ -156,6 +156,7 @@ Sum toSum(const Expr& e) {
       for (int i = 0; i < static_cast<int>(k) && !tooBig; ++i) out = multiplySums(out, base, &tooBig);
       return tooBig ? opaque(e) : out;
     }
+    case Op::Spline: return opaque(e);  // a B-spline function of v is a general function
     case Op::Call: {
       if (e->fn == ExprFn::General) return opaque(e);  // kept whole: callers look for it
       const bool wave = e->fn == ExprFn::Cos || e->fn == ExprFn::Sin || e->fn == ExprFn::Exp || e->fn == ExprFn::Cosh || e->fn == ExprFn::Sinh;

@@ -1,5 +1,7 @@
 #include "expr/taylor.hpp"
 
+#include "expr/spline.hpp"
+
 #include <cmath>
 #include <unordered_map>
 
@@ -149,8 +151,25 @@ struct Evaluator {
         return expS(mul(b, logS(at(*e.a))));
       }
       case Op::Call: return call(e.fn, at(*e.a));
+      case Op::Spline: return splineS(*e.spline, at(*e.a));
     }
     return constantS(K, NAN);
+  }
+
+  // f(a_0 + h) = Σ_m f^(m)(a_0)/m! h^m, h = a - a_0: the series of h's powers, term by term.
+  Series splineS(const SplineFn& f, const Series& a) {
+    Series r = constantS(K, f.eval(a[0])), h = a, hm = constantS(K, 1.0);
+    h[0] = 0.0;
+    double factorial = 1.0;
+    const SplineFn* d = &f;
+    for (size_t m = 1; m < K && d->derivative(); ++m) {
+      d = d->derivative().get();
+      factorial *= double(m);
+      hm = mul(hm, h);
+      const double c = d->eval(a[0]) / factorial;
+      for (size_t k = m; k < K; ++k) r[k] += c * hm[k];
+    }
+    return r;
   }
 
   Series call(ExprFn f, const Series& a) {

@@ -69,6 +69,8 @@ class Printer {
       case Op::Div: return sub(*e.a, 2), put("/"), sub(*e.b, 4);
       case Op::Pow: return sub(*e.a, 5), put("^"), sub(*e.b, 4);
       case Op::Call: return put(std::string(exprFnName(e.fn)) + "("), node(*e.a), put(")");
+      // Shown, not typed: a B-spline function's coefficients live in the scene's surface.
+      case Op::Spline: return put("bspline("), node(*e.a), put(")");
     }
   }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "basis/spline_data.hpp"
 #include "basis/general_function.hpp"
 #include "common/errors.hpp"
 #include "methods/approximate.hpp"
@@ -33,6 +34,14 @@ namespace {
 // N^-3; at most 8 (a Hermite polynomial of degree 17, well conditioned in scaled powers).
 constexpr int kMaxOpenDegree = 20;
 int endMatchOrder(const ComponentProblem& c) { return std::min(2 * static_cast<int>(c.alpha.size()), 8); }
+// B-spline data (a NURBS border, its tangents) are matched at the ends to this order at most.
+// Their ends' higher derivatives belong to the end pieces (or to a rational curve whose weights
+// bend them), not to one smooth function: the Hermite polynomial through them has v-derivatives
+// far beyond the data's, which its closed form multiplies into the blend. On 36 random NURBS
+// blends (tests/native/nurbs_surface_test.cpp), order 2 left blends 6..2 400 times the sheets'
+// size, 4 also failed a join (G2 3.7e-5), 6 (the order for smooth data) gave 10^5; orders 0
+// and 1 kept every blend at the sheets' size and every join certified.
+constexpr int kSplineDataMatch = 1;
 
 PdeProblem modalProblem(const PdeProblem& p, int N, bool loop) {
   PdeProblem q = p;
@@ -52,9 +61,12 @@ PdeProblem modalProblem(const PdeProblem& p, int N, bool loop) {
           if (general.empty() && (!loop || p.periodicV)) continue;
           const VExpansion gen = loop ? slot : general;
           slot = loop ? VExpansion{} : familyPart(slot);
+          // Open data from a B-spline border (a NURBS surface's, expr/spline.hpp) are matched
+          // at the ends to first order at most, and never by one polynomial of high degree.
+          const bool spline = hasSplineData(gen);
           const VExpansion approx = loop || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
-                                    : N <= kMaxOpenDegree       ? chebyshevInterpolant(gen, p.v0, p.v1, N)
-                                                                : endMatchedFourier(gen, p.v0, p.v1, N, m);
+                                    : N <= kMaxOpenDegree && !spline  ? chebyshevInterpolant(gen, p.v0, p.v1, N)
+                                                                      : endMatchedFourier(gen, p.v0, p.v1, N, spline ? std::min(m, kSplineDataMatch) : m);
           slot.insert(slot.end(), approx.begin(), approx.end());
         }
     } catch (const Error& e) {

@@ -4,6 +4,7 @@
 
 #include "scene/expression_fields.hpp"
 #include "scene/json_fields.hpp"
+#include "scene/nurbs_json.hpp"
 #include "scene/patch_parsers.hpp"
 #include "scene/placement.hpp"
 
@@ -59,24 +60,41 @@ void parseRuled(const json& j, const std::string& path, const Resolver& r, Patch
   }
 }
 
-// "surface" (version 2): per coordinate an expression in t and v; version 4 may place it
+// "surface" (version 2): per coordinate an expression in t and v, or (version 4) a NURBS
+// surface (scene/nurbs_json.hpp); version 4 may place it
 // (scene/placement.hpp), which rewrites the three expressions before they are split.
 void parseSurface(const json& j, const std::string& path, const Resolver& r, int version, Patch& patch) {
-  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "meets", "placement"});
+  allowOnly(j, path, {"name", "kind", "v_range", "t_range", "x", "y", "z", "nurbs", "meets", "placement"});
   parseMeets(j, path, r, patch);
-  primaryRanges(j, path, r, patch.primary());
+  PrimarySurface& S = patch.primary();
   std::array<Expr, 3> xyz;
-  for (int c = 0; c < 3; ++c)  // a missing coordinate is 0
-    xyz[c] = j.contains(kAxis[c]) ? surfaceField(j[kAxis[c]], path + "." + kAxis[c], r) : constant(0.0);
+  if (j.contains("nurbs")) {  // a NURBS surface instead of expressions (scene/nurbs_json.hpp)
+    if (version < 4) fail(ErrorCode::InvalidField, path + ".nurbs", "a NURBS surface needs scene version 4");
+    for (int c = 0; c < 3; ++c)
+      if (j.contains(kAxis[c])) fail(ErrorCode::InvalidField, path + "." + kAxis[c], "a surface is given either by \"nurbs\" or by x, y, z, not both");
+    NurbsDomain d{};
+    xyz = parseNurbs(j["nurbs"], path, &d);
+    const auto tr = r.range(j, "t_range", path, d.t0, d.t1), vr = r.range(j, "v_range", path, d.v0, d.v1);
+    // Outside its knots a B-spline is not the surface: a range must stay within them.
+    if (tr[0] < d.t0 || tr[1] > d.t1)
+      fail(ErrorCode::InvalidField, path + ".t_range", "leaves the NURBS surface's domain in t, [" + std::to_string(d.t0) + ", " + std::to_string(d.t1) + "]");
+    if (vr[0] < d.v0 || vr[1] > d.v1)
+      fail(ErrorCode::InvalidField, path + ".v_range", "leaves the NURBS surface's domain in v, [" + std::to_string(d.v0) + ", " + std::to_string(d.v1) + "]");
+    S.t0 = tr[0], S.t1 = tr[1], S.v0 = vr[0], S.v1 = vr[1];
+  } else {
+    primaryRanges(j, path, r, S);
+    for (int c = 0; c < 3; ++c)  // a missing coordinate is 0
+      xyz[c] = j.contains(kAxis[c]) ? surfaceField(j[kAxis[c]], path + "." + kAxis[c], r) : constant(0.0);
+  }
   if (j.contains("placement")) {
     if (version < 4) fail(ErrorCode::InvalidField, path + ".placement", "a placement needs scene version 4");
     const Placement placement = parsePlacement(j["placement"], path + ".placement", r);
-    checkPlacementReach(placement, xyz, patch.primary().t0, patch.primary().t1, patch.primary().v0, patch.primary().v1, path + ".placement");
+    checkPlacementReach(placement, xyz, S.t0, S.t1, S.v0, S.v1, path + ".placement");
     xyz = applyPlacement(placement, xyz);
   }
   for (int c = 0; c < 3; ++c) {
-    patch.primary().full[c] = xyz[c];
-    splitSurface(xyz[c], patch.primary().terms[c], &patch.primary().pointwise[c]);
+    S.full[c] = xyz[c];
+    splitSurface(xyz[c], S.terms[c], &S.pointwise[c]);
   }
 }
 

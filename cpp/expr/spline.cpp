@@ -1,0 +1,110 @@
+#include "expr/spline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pdesurf {
+
+std::string SplineFn::problem(int p, const std::vector<double>& t, const std::vector<double>& c) {
+  if (p < 0) return "the degree is negative";
+  if (c.size() < size_t(p) + 1) return "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) + " coefficients";
+  if (t.size() != c.size() + size_t(p) + 1)
+    return std::to_string(c.size()) + " coefficients of degree " + std::to_string(p) + " need " + std::to_string(c.size() + size_t(p) + 1) +
+           " knots, not " + std::to_string(t.size());
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(t[i])) return "knot " + std::to_string(i) + " is not finite";
+    if (i && t[i] < t[i - 1]) return "knot " + std::to_string(i) + " is smaller than the one before";
+  }
+  for (size_t i = 0; i < c.size(); ++i)
+    if (!std::isfinite(c[i])) return "coefficient " + std::to_string(i) + " is not finite";
+  const size_t n = c.size();
+  if (!(t[size_t(p)] < t[n])) return "the domain [knot p, knot n] is empty";
+  for (size_t i = size_t(p) + 1; i < n;) {  // interior knots: multiplicity at most p
+    size_t j = i;
+    while (j < n && t[j] == t[i]) ++j;
+    if (t[i] > t[size_t(p)] && t[i] < t[n] && j - i > size_t(p))
+      return "the knot " + std::to_string(t[i]) + " is repeated " + std::to_string(j - i) + " times inside the domain (at most the degree, " +
+             std::to_string(p) + ", keeps the function continuous)";
+    i = j;
+  }
+  return "";
+}
+
+SplineFn::SplineFn(int degree, std::vector<double> knots, std::vector<double> coefs) : p_(degree), t_(std::move(knots)), c_(std::move(coefs)) {
+  if (p_ == 0) return;
+  // d/dx Σ c_i N_{i,p} = Σ p (c_{i+1} - c_i) / (t_{i+p+1} - t_{i+1}) N_{i+1,p-1}, on the knots without their ends.
+  std::vector<double> d(c_.size() - 1);
+  for (size_t i = 0; i + 1 < c_.size(); ++i) {
+    const double h = t_[i + size_t(p_) + 1] - t_[i + 1];
+    d[i] = h > 0 ? p_ * (c_[i + 1] - c_[i]) / h : 0.0;
+  }
+  derivative_ = std::make_shared<const SplineFn>(p_ - 1, std::vector<double>(t_.begin() + 1, t_.end() - 1), std::move(d));
+}
+
+int SplineFn::span(double x) const {
+  const int n = int(c_.size());
+  if (!(x >= t_[size_t(p_)])) {  // below the domain (or NaN): the first non-empty piece
+    int k = p_;
+    while (k + 1 < n && t_[size_t(k) + 1] == t_[size_t(k)]) ++k;
+    return k;
+  }
+  if (x >= t_[size_t(n)]) {  // at or past its end: the last non-empty piece
+    int k = n - 1;
+    while (k > p_ && t_[size_t(k)] == t_[size_t(k) + 1]) --k;
+    return k;
+  }
+  const auto it = std::upper_bound(t_.begin() + p_, t_.begin() + n + 1, x);
+  return int(it - t_.begin()) - 1;
+}
+
+double SplineFn::eval(double x) const {
+  if (std::isnan(x)) return x;
+  const int k = span(x);
+  double d[32];
+  std::vector<double> big;
+  double* a = d;
+  if (p_ + 1 > 32) big.resize(size_t(p_) + 1), a = big.data();
+  for (int j = 0; j <= p_; ++j) a[j] = c_[size_t(k - p_ + j)];
+  // de Boor: every denominator spans [t_k, t_{k+1}], a non-empty piece.
+  for (int r = 1; r <= p_; ++r)
+    for (int j = p_; j >= r; --j) {
+      const size_t i = size_t(k - p_ + j);
+      const double alpha = (x - t_[i]) / (t_[i + size_t(p_ - r) + 1] - t_[i]);
+      a[j] = (1.0 - alpha) * a[j - 1] + alpha * a[j];
+    }
+  return a[p_];
+}
+
+double SplineFn::derivativeAt(double x, int k) const {
+  const SplineFn* f = this;
+  for (int i = 0; i < k; ++i) {
+    if (!f->derivative_) return std::isnan(x) ? x : 0.0;
+    f = f->derivative_.get();
+  }
+  return f->eval(x);
+}
+
+bool SplineFn::range(double a, double b, double* lo, double* hi) const {
+  if (!(a >= this->lo() && b <= this->hi() && a <= b)) return false;
+  const int k0 = span(a), k1 = span(b);
+  const auto first = c_.begin() + (k0 - p_), last = c_.begin() + k1 + 1;
+  *lo = *std::min_element(first, last);
+  *hi = *std::max_element(first, last);
+  return true;
+}
+
+std::vector<double> SplineFn::breaks() const {
+  std::vector<double> out;
+  for (size_t i = size_t(p_) + 1; i < c_.size(); ++i)
+    if (t_[i] > lo() && t_[i] < hi() && (out.empty() || out.back() != t_[i])) out.push_back(t_[i]);
+  return out;
+}
+
+std::vector<double> SplineFn::kinks() const {
+  std::vector<double> out;
+  for (size_t i = size_t(p_) + 1; i < c_.size(); ++i)
+    if (p_ > 0 && t_[i] > lo() && t_[i] < hi() && t_[i + size_t(p_) - 1] == t_[i] && t_[i - 1] != t_[i]) out.push_back(t_[i]);
+  return out;
+}
+
+}  // namespace pdesurf
