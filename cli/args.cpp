@@ -25,6 +25,8 @@ const char* kUsage =
     "      E (seed 000 Eq. 24) against the closed form or the reference, boundary error, solve time\n"
     "  pdesurf check SCENE.json [--json] [--grid NxN]                         join certificate (G0/G1/G2, folds) and\n"
     "      crossings on an NxN mesh per patch (default 64); exit 1 when a join fails its promise or a patch crosses\n"
+    "  pdesurf import FILE.step|.stp|.igs|.iges [-o SCENE.json]             a scene of the file's faces, each a NURBS\n"
+    "      surface over its parameter bounds (trims not kept; Open CASCADE reads the file); default: standard output\n"
     "  pdesurf encode-link SCENE.json [--grid NUxNV]                          print the shareable link's fragment\n"
     "  pdesurf decode-link 'URL-or-fragment'                                  print the scene of a shared link\n"
     "  methods: auto, closed, pseudo-navier[:M,N,L], modal:N, fourier:N, pseudo-spectral:N, reference\n";
@@ -50,7 +52,7 @@ Options parseArgs(const std::vector<std::string>& args) {
   Options o;
   o.command = args[0];
   if (o.command != "sample" && o.command != "export" && o.command != "compare" && o.command != "encode-link" &&
-      o.command != "decode-link" && o.command != "check")
+      o.command != "decode-link" && o.command != "check" && o.command != "import")
     throw std::runtime_error("unknown command '" + o.command + "'");
   for (size_t i = 1; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -92,7 +94,10 @@ Options parseArgs(const std::vector<std::string>& args) {
     else if (o.scenePath.empty()) o.scenePath = a;
     else throw std::runtime_error("unexpected argument '" + a + "'");
   }
-  if (o.scenePath.empty()) throw std::runtime_error(o.command == "decode-link" ? "missing the link" : "missing SCENE.json");
+  if (o.scenePath.empty())
+    throw std::runtime_error(o.command == "decode-link" ? "missing the link" : o.command == "import" ? "missing FILE.step or FILE.igs" : "missing SCENE.json");
+  if (o.command == "import" && (o.gridGiven || o.json || o.controlNet || !o.method.empty() || !o.patch.empty()))
+    throw std::runtime_error("import takes FILE and -o SCENE.json only");
   if (o.command == "export" && o.output.empty()) throw std::runtime_error("export needs -o FILE (.obj, .stl, .ply, .glb, .3mf, .step, .stp, .igs or .iges)");
   if (o.command != "export" && !o.format.empty()) throw std::runtime_error("--format applies to export only");
   if (o.command != "export" && o.loosePatches) throw std::runtime_error("--patches applies to export only");

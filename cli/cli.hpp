@@ -28,7 +28,8 @@ int runCadExport(const Options& o, CadFormat format, std::ostream& out);
 int runCompare(const Options& o, std::ostream& out);
 int runEncodeLink(const Options& o, std::ostream& out);
 int runDecodeLink(const Options& o, std::ostream& out);
-int runCheck(const Options& o, std::ostream& out);  // exit code 1 when a join fails or a patch crosses
+int runCheck(const Options& o, std::ostream& out);
+int runImport(const Options& o, std::ostream& out);  // cli/import_command.cpp  // exit code 1 when a join fails or a patch crosses
 
 extern const char* kUsage;
 

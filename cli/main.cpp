@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     if (o.command == "sample") return runSample(o, std::cout);
     if (o.command == "compare") return runCompare(o, std::cout);
     if (o.command == "check") return runCheck(o, std::cout);
+    if (o.command == "import") return runImport(o, std::cout);
     if (o.command == "encode-link") return runEncodeLink(o, std::cout);
     if (o.command == "decode-link") return runDecodeLink(o, std::cout);
     return runExport(o);

@@ -1,0 +1,226 @@
+#include "cad_import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <IGESCAFControl_Reader.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include "common/errors.hpp"
+#include "common/limits.hpp"
+#include "scene/scene.hpp"
+
+namespace pdesurf::cad_import {
+namespace {
+
+using json = nlohmann::json;
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Names the file gives its faces (STEP: the ADVANCED_FACEs' names, read when asked for).
+void collectNames(const TDF_Label& label, const TopLoc_Location& loc, std::vector<std::pair<TopoDS_Face, std::string>>* out) {
+  TopoDS_Shape shape;
+  Handle(TDataStd_Name) name;
+  if (XCAFDoc_ShapeTool::GetShape(label, shape) && shape.ShapeType() == TopAbs_FACE && label.FindAttribute(TDataStd_Name::GetID(), name))
+    out->push_back({TopoDS::Face(shape.Moved(loc)), TCollection_AsciiString(name->Get()).ToCString()});
+  TDF_LabelSequence children;
+  XCAFDoc_ShapeTool::GetSubShapes(label, children);
+  for (const TDF_Label& c : children) collectNames(c, loc, out);
+  children.Clear();
+  XCAFDoc_ShapeTool::GetComponents(label, children);
+  for (const TDF_Label& c : children) {
+    TDF_Label referred;
+    if (XCAFDoc_ShapeTool::GetReferredShape(c, referred)) collectNames(referred, loc * XCAFDoc_ShapeTool::GetLocation(c), out);
+  }
+}
+
+// A patch name the scene accepts: printable, at most kNameChars, unique.
+std::string patchName(std::string want, int index, std::vector<std::string>& taken) {
+  std::string s;
+  for (char c : want)
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == ' ' || c == '.') s += c;
+  if (s.size() > limits::kNameChars - 8) s.resize(limits::kNameChars - 8);
+  if (s.empty()) s = "face " + std::to_string(index + 1);
+  std::string name = s;
+  for (int k = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++k) name = s + " " + std::to_string(k);
+  taken.push_back(name);
+  return name;
+}
+
+json nurbsOf(const Handle(Geom_BSplineSurface) & s, const std::string& who) {
+  const int nt = s->NbUPoles(), nv = s->NbVPoles();
+  if (size_t(nt) * size_t(nv) > limits::kNurbsPoints)
+    fail(ErrorCode::TooLarge, who, std::to_string(nt) + " × " + std::to_string(nv) + " control points: a surface has at most " +
+                                      std::to_string(limits::kNurbsPoints));
+  if (s->UDegree() > limits::kNurbsDegree || s->VDegree() > limits::kNurbsDegree)
+    fail(ErrorCode::TooLarge, who, "degree " + std::to_string(std::max(s->UDegree(), s->VDegree())) + ": at most " + std::to_string(limits::kNurbsDegree));
+  json points = json::array(), weights = json::array();
+  bool rational = false;
+  for (int i = 1; i <= nt; ++i) {
+    json row = json::array(), wrow = json::array();
+    for (int j = 1; j <= nv; ++j) {
+      const gp_Pnt p = s->Pole(i, j);
+      const double w = s->Weight(i, j);
+      for (double x : {p.X(), p.Y(), p.Z(), w})
+        if (!std::isfinite(x)) fail(ErrorCode::NonFinite, who, "control point (" + std::to_string(i) + ", " + std::to_string(j) + ") is not finite");
+      row.push_back({p.X(), p.Y(), p.Z()});
+      wrow.push_back(w);
+      rational = rational || w != s->Weight(1, 1);
+    }
+    points.push_back(row), weights.push_back(wrow);
+  }
+  auto flat = [](const TColStd_Array1OfReal& k) {
+    std::vector<double> out;
+    for (int i = k.Lower(); i <= k.Upper(); ++i) out.push_back(k(i));
+    return out;
+  };
+  json n = {{"degree", {s->UDegree(), s->VDegree()}}, {"knots", {flat(s->UKnotSequence()), flat(s->VKnotSequence())}}, {"points", points}};
+  if (rational) n["weights"] = weights;
+  return n;
+}
+
+}  // namespace
+
+json importCadFile(const std::string& path) {
+  // Errors name the file's part ("the file", a face); the CLI names the file itself.
+  const std::string file = "the file";
+  const std::string title = std::filesystem::path(path).filename().string();
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (ec) fail(ErrorCode::InvalidField, file, "cannot be read");
+  if (static_cast<long long>(bytes) > kMaxFileBytes)
+    fail(ErrorCode::TooLarge, file, std::to_string(bytes >> 20) + " MB: at most " + std::to_string(kMaxFileBytes >> 20) + " MB are imported");
+  const std::string ext = lower(path.substr(path.find_last_of('.') + 1));
+  const bool step = ext == "step" || ext == "stp", iges = ext == "igs" || ext == "iges";
+  if (!step && !iges) fail(ErrorCode::InvalidField, file, "unknown extension ." + ext + " (want .step, .stp, .igs or .iges)");
+
+  // OCCT reports to its own messenger (stdout); the CLI's output is the scene.
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_Printer));
+  Handle(TDocStd_Document) doc;
+  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+  try {
+    if (step) {
+      STEPCAFControl_Reader reader;
+      Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);  // the faces' names (off by default)
+      reader.SetNameMode(true);
+      if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) fail(ErrorCode::ParseError, file, "Open CASCADE could not read it as STEP");
+      if (!reader.Transfer(doc)) fail(ErrorCode::InvalidField, file, "holds no shape Open CASCADE can transfer");
+    } else {
+      IGESCAFControl_Reader reader;
+      reader.SetNameMode(true);
+      if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) fail(ErrorCode::ParseError, file, "Open CASCADE could not read it as IGES");
+      if (!reader.Transfer(doc)) fail(ErrorCode::InvalidField, file, "holds no shape Open CASCADE can transfer");
+    }
+  } catch (const Standard_Failure& f) {
+    fail(ErrorCode::ParseError, file, std::string("Open CASCADE: ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
+  }
+
+  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_LabelSequence roots;
+  tool->GetFreeShapes(roots);
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  std::vector<std::pair<TopoDS_Face, std::string>> names;
+  for (const TDF_Label& root : roots) {
+    builder.Add(all, XCAFDoc_ShapeTool::GetShape(root));
+    collectNames(root, TopLoc_Location(), &names);
+  }
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(all, TopAbs_FACE, faces);
+  // Counted before any face is converted: a scene holds kPatches patches.
+  if (faces.Extent() == 0) fail(ErrorCode::InvalidField, file, "has no faces");
+  if (faces.Extent() > limits::kPatches)
+    fail(ErrorCode::TooLarge, file, std::to_string(faces.Extent()) + " faces: a scene holds at most " + std::to_string(limits::kPatches) + " patches");
+
+  json patches = json::array();
+  std::vector<std::string> taken;
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    const TopoDS_Face face = TopoDS::Face(faces(i));
+    std::string given;
+    for (const auto& [f, n] : names)
+      if (f.IsSame(face)) given = n;
+    const std::string name = patchName(given, i - 1, taken);
+    const std::string who = "face '" + name + "' (" + std::to_string(i) + " of " + std::to_string(faces.Extent()) + ")";
+    try {
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      for (double x : {u0, u1, v0, v1})
+        if (!std::isfinite(x) || std::abs(x) > 1e12) fail(ErrorCode::NonFinite, who, "its parameter bounds are not finite");
+      if (!(u1 > u0 && v1 > v0)) fail(ErrorCode::InvalidField, who, "its parameter bounds are empty");
+      Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+      if (surface.IsNull()) fail(ErrorCode::InvalidField, who, "has no surface");
+      // The face's bounds within its surface's where that is bounded (a file's bounds may
+      // overshoot by its tolerance); then trimmed to them: a plane or a cone is infinite, and a
+      // periodic surface converts without its seam moving.
+      double su0, su1, sv0, sv1;
+      surface->Bounds(su0, su1, sv0, sv1);
+      if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
+      if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
+      if (!(u1 > u0 && v1 > v0)) fail(ErrorCode::InvalidField, who, "its bounds lie outside its surface");
+      Handle(Geom_BSplineSurface) bs = Handle(Geom_BSplineSurface)::DownCast(surface);
+      if (bs.IsNull()) bs = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
+      if (bs.IsNull()) fail(ErrorCode::InvalidField, who, "Open CASCADE could not convert its surface to a B-spline");
+      bs = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
+      if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
+      if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
+      double bu0, bu1, bv0, bv1;
+      bs->Bounds(bu0, bu1, bv0, bv1);
+      // The face's bounds within the converted surface's (equal, up to rounding).
+      const double tu0 = std::max(u0, bu0), tu1 = std::min(u1, bu1), tv0 = std::max(v0, bv0), tv1 = std::min(v1, bv1);
+      if (!(tu1 > tu0 && tv1 > tv0)) fail(ErrorCode::InvalidField, who, "its bounds lie outside its surface");
+      json patch = {{"name", name}, {"kind", "surface"}, {"nurbs", nurbsOf(bs, who)}, {"t_range", {tu0, tu1}}, {"v_range", {tv0, tv1}}};
+      patches.push_back(patch);
+    } catch (const Standard_Failure& f) {
+      fail(ErrorCode::InvalidField, who, std::string("Open CASCADE: ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
+    }
+  }
+  json scene = {{"format", "pdesurf-scene"},
+                {"version", 4},
+                {"title", title},
+                {"description", "Imported from " + title + ": " + std::to_string(patches.size()) +
+                                    " faces as NURBS surfaces over their parameter bounds (trims not kept)."},
+                {"patches", patches}};
+  // The scene the CLI writes reads: anything the core refuses is named here, per face.
+  try {
+    parseScene(scene.dump());
+  } catch (const Error& e) {
+    std::string what = e.what();
+    const auto at = what.find("patches[");
+    if (at != std::string::npos) {
+      const size_t k = std::stoul(what.substr(at + 8));
+      if (k < patches.size()) what = "face '" + patches[k]["name"].get<std::string>() + "': " + what;
+    }
+    throw Error(e.code(), what);
+  }
+  return scene;
+}
+
+}  // namespace pdesurf::cad_import

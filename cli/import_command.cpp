@@ -1,0 +1,28 @@
+// pdesurf import FILE -o SCENE.json (cli/import/cad_import.hpp).
+#include <fstream>
+
+#include "cli.hpp"
+#include "common/errors.hpp"
+#ifdef PDESURF_CAD_IMPORT
+#include "import/cad_import.hpp"
+#endif
+
+namespace pdesurf::cli {
+
+int runImport(const Options& o, std::ostream& out) {
+#ifdef PDESURF_CAD_IMPORT
+  const std::string text = cad_import::importCadFile(o.scenePath).dump(1) + "\n";
+  if (o.output.empty()) {
+    out << text;
+    return 0;
+  }
+  std::ofstream file(o.output, std::ios::binary);
+  if (!(file << text) || !file.flush()) throw std::runtime_error("cannot write '" + o.output + "'");
+  return 0;
+#else
+  (void)o, (void)out;
+  throw std::runtime_error("this build of pdesurf has no CAD import (Open CASCADE was not found when it was configured)");
+#endif
+}
+
+}  // namespace pdesurf::cli
