@@ -4,6 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <array>
+#include <cstdio>
 #include <vector>
 
 #include <BRepTools.hxx>
@@ -11,6 +14,11 @@
 #include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESCAFControl_Reader.hxx>
 #include <Interface_Static.hxx>
@@ -74,7 +82,8 @@ std::string patchName(std::string want, int index, std::vector<std::string>& tak
   return name;
 }
 
-json nurbsOf(const Handle(Geom_BSplineSurface) & s, const std::string& who) {
+// swap: the patch's t is OCCT's v (points and weights transposed).
+json nurbsOf(const Handle(Geom_BSplineSurface) & s, const std::string& who, bool swap) {
   const int nt = s->NbUPoles(), nv = s->NbVPoles();
   if (size_t(nt) * size_t(nv) > limits::kNurbsPoints)
     fail(ErrorCode::TooLarge, who, std::to_string(nt) + " × " + std::to_string(nv) + " control points: a surface has at most " +
@@ -101,9 +110,69 @@ json nurbsOf(const Handle(Geom_BSplineSurface) & s, const std::string& who) {
     for (int i = k.Lower(); i <= k.Upper(); ++i) out.push_back(k(i));
     return out;
   };
-  json n = {{"degree", {s->UDegree(), s->VDegree()}}, {"knots", {flat(s->UKnotSequence()), flat(s->VKnotSequence())}}, {"points", points}};
+  if (swap) {
+    json tp = json::array(), tw = json::array();
+    for (int j = 0; j < nv; ++j) {
+      json row = json::array(), wrow = json::array();
+      for (int i = 0; i < nt; ++i) row.push_back(points[size_t(i)][size_t(j)]), wrow.push_back(weights[size_t(i)][size_t(j)]);
+      tp.push_back(row), tw.push_back(wrow);
+    }
+    points = tp, weights = tw;
+  }
+  const json degree = swap ? json{s->VDegree(), s->UDegree()} : json{s->UDegree(), s->VDegree()};
+  const json knots = swap ? json{flat(s->VKnotSequence()), flat(s->UKnotSequence())} : json{flat(s->UKnotSequence()), flat(s->VKnotSequence())};
+  json n = {{"degree", degree}, {"knots", knots}, {"points", points}};
   if (rational) n["weights"] = weights;
   return n;
+}
+
+// Whether the face closes in u (its u0 and u1 edges are one curve), sampled over its v.
+bool closesIn(const Handle(Geom_Surface) & s, bool inU, double u0, double u1, double v0, double v1) {
+  double size = 0.0, gap = 0.0;
+  for (int k = 0; k <= 8; ++k) {
+    const double w = (inU ? v0 : u0) + ((inU ? v1 : u1) - (inU ? v0 : u0)) * k / 8;
+    const gp_Pnt a = inU ? s->Value(u0, w) : s->Value(w, v0), b = inU ? s->Value(u1, w) : s->Value(w, v1);
+    size = std::max({size, gp_Vec(a.XYZ()).Magnitude(), s->Value(0.5 * (u0 + u1), 0.5 * (v0 + v1)).Distance(a)});
+    gap = std::max(gap, a.Distance(b));
+  }
+  return gap <= 1e-9 * std::max(size, 1e-300);
+}
+
+std::string num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+// The analytic surfaces as expressions in t (OCCT's u) and v, in OCCT's own parametrisation
+// (Geom_*Surface's documentation): exact, and closed-form families for the blends that meet
+// them. Null for any other surface.
+// u and v name OCCT's u and v in the text ("t" and "v", or swapped).
+std::optional<std::array<std::string, 3>> analyticExpressions(const Handle(Geom_Surface) & s, const std::string& u, const std::string& v) {
+  gp_Ax3 a;
+  std::array<std::string, 3> xyz;
+  // Each coordinate: o + radial(t, v) (cos t X + sin t Y) + axial(v) Z, or o + t X + v Y for a plane.
+  auto frame = [&](const std::string& radial, const std::string& axial) {
+    for (int c = 0; c < 3; ++c) {
+      const double o = a.Location().Coord(c + 1), x = a.XDirection().Coord(c + 1), y = a.YDirection().Coord(c + 1), z = a.Direction().Coord(c + 1);
+      xyz[size_t(c)] = num(o) + " + (" + radial + ")*(" + num(x) + "*cos(" + u + ") + " + num(y) + "*sin(" + u + ")) + (" + axial + ")*" + num(z);
+    }
+    return xyz;
+  };
+  if (auto p = Handle(Geom_Plane)::DownCast(s); !p.IsNull()) {
+    a = p->Position();
+    for (int c = 0; c < 3; ++c)
+      xyz[size_t(c)] = num(a.Location().Coord(c + 1)) + " + " + num(a.XDirection().Coord(c + 1)) + "*" + u + " + " + num(a.YDirection().Coord(c + 1)) + "*" + v;
+    return xyz;
+  }
+  if (auto c = Handle(Geom_CylindricalSurface)::DownCast(s); !c.IsNull()) return a = c->Position(), frame(num(c->Radius()), v);
+  if (auto c = Handle(Geom_ConicalSurface)::DownCast(s); !c.IsNull())
+    return a = c->Position(), frame(num(c->RefRadius()) + " + " + num(std::sin(c->SemiAngle())) + "*" + v, num(std::cos(c->SemiAngle())) + "*" + v);
+  if (auto c = Handle(Geom_SphericalSurface)::DownCast(s); !c.IsNull())
+    return a = c->Position(), frame(num(c->Radius()) + "*cos(" + v + ")", num(c->Radius()) + "*sin(" + v + ")");
+  if (auto c = Handle(Geom_ToroidalSurface)::DownCast(s); !c.IsNull())
+    return a = c->Position(), frame(num(c->MajorRadius()) + " + " + num(c->MinorRadius()) + "*cos(" + v + ")", num(c->MinorRadius()) + "*sin(" + v + ")");
+  return std::nullopt;
 }
 
 }  // namespace
@@ -185,6 +254,17 @@ json importCadFile(const std::string& path) {
       if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
       if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
       if (!(u1 > u0 && v1 > v0)) fail(ErrorCode::InvalidField, who, "its bounds lie outside its surface");
+      if (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface); !trimmed.IsNull()) surface = trimmed->BasisSurface();
+      // pdesurf's v runs around a closed surface (blends meet its t-borders): a face closed in
+      // u only (a cylinder's, a cone's, a sphere's angle) is swapped, t = its v, v = its u.
+      const bool swap = closesIn(surface, true, u0, u1, v0, v1) && !closesIn(surface, false, u0, u1, v0, v1);
+      const json tRange = swap ? json{v0, v1} : json{u0, u1}, vRange = swap ? json{u0, u1} : json{v0, v1};
+      if (const auto xyz = analyticExpressions(surface, swap ? "v" : "t", swap ? "t" : "v")) {
+        patches.push_back({{"name", name}, {"kind", "surface"}, {"x", (*xyz)[0]}, {"y", (*xyz)[1]}, {"z", (*xyz)[2]}, {"t_range", tRange}, {"v_range", vRange}});
+        continue;
+      }
+      // Any other surface as NURBS: a B-spline as it is; the rest (Bézier, revolved, extruded,
+      // offset surfaces) converted by OCCT over the face's bounds.
       Handle(Geom_BSplineSurface) bs = Handle(Geom_BSplineSurface)::DownCast(surface);
       if (bs.IsNull()) bs = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
       if (bs.IsNull()) fail(ErrorCode::InvalidField, who, "Open CASCADE could not convert its surface to a B-spline");
@@ -196,7 +276,8 @@ json importCadFile(const std::string& path) {
       // The face's bounds within the converted surface's (equal, up to rounding).
       const double tu0 = std::max(u0, bu0), tu1 = std::min(u1, bu1), tv0 = std::max(v0, bv0), tv1 = std::min(v1, bv1);
       if (!(tu1 > tu0 && tv1 > tv0)) fail(ErrorCode::InvalidField, who, "its bounds lie outside its surface");
-      json patch = {{"name", name}, {"kind", "surface"}, {"nurbs", nurbsOf(bs, who)}, {"t_range", {tu0, tu1}}, {"v_range", {tv0, tv1}}};
+      const json tr = swap ? json{tv0, tv1} : json{tu0, tu1}, vr = swap ? json{tu0, tu1} : json{tv0, tv1};
+      json patch = {{"name", name}, {"kind", "surface"}, {"nurbs", nurbsOf(bs, who, swap)}, {"t_range", tr}, {"v_range", vr}};
       patches.push_back(patch);
     } catch (const Standard_Failure& f) {
       fail(ErrorCode::InvalidField, who, std::string("Open CASCADE: ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
@@ -206,7 +287,7 @@ json importCadFile(const std::string& path) {
                 {"version", 4},
                 {"title", title},
                 {"description", "Imported from " + title + ": " + std::to_string(patches.size()) +
-                                    " faces as NURBS surfaces over their parameter bounds (trims not kept)."},
+                                    " faces over their parameter bounds (trims not kept); a face closed in u only has t and v swapped."},
                 {"patches", patches}};
   // The scene the CLI writes reads: anything the core refuses is named here, per face.
   try {

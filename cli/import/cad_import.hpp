@@ -1,8 +1,11 @@
 // `pdesurf import`: a STEP or IGES file's faces as a scene, one "surface" patch per face given
 // as NURBS (scene/nurbs_json.hpp), read with Open CASCADE. Analytic faces (planes, cylinders,
-// cones, spheres, tori) are converted exactly to rational B-splines by OCCT's GeomConvert over
-// the face's parameter bounds; every face keeps its own (u, v) as the patch's (t, v) and its
-// parameter bounds as the patch's ranges. Trims are not kept: a face is drawn over the box of
+// cones, spheres, tori) are written as their expressions in OCCT's own parametrisation (exact,
+// and closed-form families for blends); other surfaces (Bézier, revolved, extruded, offset)
+// are converted to B-splines by OCCT's GeomConvert over the face's bounds. A face's (u, v) is
+// the patch's (t, v) (for converted surfaces, OCCT's conversion's), its parameter bounds the
+// patch's ranges — swapped for a face closed in u only (a cylinder's angle): pdesurf's v runs
+// around, and blends meet the t-borders (the rims). Trims are not kept: a face is drawn over the box of
 // its parameter bounds (said in the scene's description). Built only where OCCT is installed.
 #pragma once
 #include <string>

@@ -10,9 +10,22 @@
 #include "methods/measures.hpp"
 #include "scene/scene.hpp"
 #include "surface/mesh.hpp"
+#include "basis/spline_data.hpp"
 #include "test_util.hpp"
 
 using namespace pdesurf;
+
+namespace {
+
+bool splineData(const PdeProblem& p) {
+  for (const auto& c : p.component)
+    for (const auto* side : {&c.left, &c.right})
+      for (const VExpansion& slot : *side)
+        if (hasSplineData(slot)) return true;
+  return false;
+}
+
+}  // namespace
 using namespace pdesurf::testing;
 
 TEST_CASE("examples: every indexed example solves, meets its trimlines and tessellates") {
@@ -56,7 +69,11 @@ TEST_CASE("examples: every indexed example solves, meets its trimlines and tesse
         // So do the aeroplane's wing and stabiliser root blends, whose rims are pointed at both
         // tips (residual 0.91 next to the tips, docs/chains-and-fills.md); their joins are
         // judged like every other.
-        else if (!sp.patch->isFill() &&
+        // A blend whose data come from B-spline surfaces (cad-part's shoulder, G2 to a quintic
+        // NURBS rim: C4 data under a sixth-order operator) has no pointwise PDE residual at the
+        // knots: the data's sixth v-derivative is a sum of jumps there (0.03..0.16 measured at
+        // a knot for 64..512 modes); it is judged by its joins and seams like every other.
+        else if (!sp.patch->isFill() && !splineData(pde) &&
                  !(id == "you2004-fig8d" && (sp.patch->name.rfind("root", 0) == 0 || sp.patch->name.rfind("stabRoot", 0) == 0)))
           CHECK(interiorResidual(pde, sp.surface).relative < 1e-9);
       }
