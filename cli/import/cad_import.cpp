@@ -7,6 +7,7 @@
 #include <optional>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include <BRepTools.hxx>
@@ -138,40 +139,71 @@ bool closesIn(const Handle(Geom_Surface) & s, bool inU, double u0, double u1, do
   return gap <= 1e-9 * std::max(size, 1e-300);
 }
 
+// The shortest decimal text that reads back to x (0.5, not 0.50000000000000000).
 std::string num(double x) {
+  if (x == 0) return "0";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
   return buf;
+}
+
+// Text in parentheses where it is a sum.
+std::string group(const std::string& e) { return e.find(' ') == std::string::npos ? e : "(" + e + ")"; }
+
+// c·f as text ("" where c is 0, f alone where c is 1); f "" means the number c itself.
+std::string term(double c, const std::string& f) {
+  if (c == 0 || f == "0") return "";
+  if (f.empty()) return num(c);
+  if (c == 1) return f;
+  if (c == -1) return "-" + group(f);
+  return num(c) + "*" + group(f);
+}
+
+// Terms joined by + ("- …" for a negative one); "0" when none.
+std::string sum(const std::vector<std::string>& terms) {
+  std::string out;
+  for (const std::string& t : terms) {
+    if (t.empty()) continue;
+    if (out.empty()) out = t;
+    else if (t[0] == '-') out += " - " + t.substr(1);
+    else out += " + " + t;
+  }
+  return out.empty() ? "0" : out;
 }
 
 // The analytic surfaces as expressions in t (OCCT's u) and v, in OCCT's own parametrisation
 // (Geom_*Surface's documentation): exact, and closed-form families for the blends that meet
-// them. Null for any other surface.
-// u and v name OCCT's u and v in the text ("t" and "v", or swapped).
+// them. u and v name OCCT's u and v in the text ("t" and "v", or swapped). Null for any other
+// surface.
 std::optional<std::array<std::string, 3>> analyticExpressions(const Handle(Geom_Surface) & s, const std::string& u, const std::string& v) {
   gp_Ax3 a;
   std::array<std::string, 3> xyz;
-  // Each coordinate: o + radial(t, v) (cos t X + sin t Y) + axial(v) Z, or o + t X + v Y for a plane.
+  // Each coordinate o + radial·(x cos u + y sin u) + axial·z in the frame's components.
   auto frame = [&](const std::string& radial, const std::string& axial) {
     for (int c = 0; c < 3; ++c) {
-      const double o = a.Location().Coord(c + 1), x = a.XDirection().Coord(c + 1), y = a.YDirection().Coord(c + 1), z = a.Direction().Coord(c + 1);
-      xyz[size_t(c)] = num(o) + " + (" + radial + ")*(" + num(x) + "*cos(" + u + ") + " + num(y) + "*sin(" + u + ")) + (" + axial + ")*" + num(z);
+      const double x = a.XDirection().Coord(c + 1), y = a.YDirection().Coord(c + 1), z = a.Direction().Coord(c + 1);
+      const std::string around = sum({term(x, "cos(" + u + ")"), term(y, "sin(" + u + ")")});
+      const std::string radialTerm = around == "0" ? "" : radial == "1" ? around : group(radial) + "*" + group(around);
+      xyz[size_t(c)] = sum({term(a.Location().Coord(c + 1), ""), radialTerm, term(z, axial)});
     }
     return xyz;
   };
   if (auto p = Handle(Geom_Plane)::DownCast(s); !p.IsNull()) {
     a = p->Position();
     for (int c = 0; c < 3; ++c)
-      xyz[size_t(c)] = num(a.Location().Coord(c + 1)) + " + " + num(a.XDirection().Coord(c + 1)) + "*" + u + " + " + num(a.YDirection().Coord(c + 1)) + "*" + v;
+      xyz[size_t(c)] = sum({term(a.Location().Coord(c + 1), ""), term(a.XDirection().Coord(c + 1), u), term(a.YDirection().Coord(c + 1), v)});
     return xyz;
   }
   if (auto c = Handle(Geom_CylindricalSurface)::DownCast(s); !c.IsNull()) return a = c->Position(), frame(num(c->Radius()), v);
   if (auto c = Handle(Geom_ConicalSurface)::DownCast(s); !c.IsNull())
-    return a = c->Position(), frame(num(c->RefRadius()) + " + " + num(std::sin(c->SemiAngle())) + "*" + v, num(std::cos(c->SemiAngle())) + "*" + v);
+    return a = c->Position(), frame(sum({term(c->RefRadius(), ""), term(std::sin(c->SemiAngle()), v)}), term(std::cos(c->SemiAngle()), v));
   if (auto c = Handle(Geom_SphericalSurface)::DownCast(s); !c.IsNull())
-    return a = c->Position(), frame(num(c->Radius()) + "*cos(" + v + ")", num(c->Radius()) + "*sin(" + v + ")");
+    return a = c->Position(), frame(term(c->Radius(), "cos(" + v + ")"), term(c->Radius(), "sin(" + v + ")"));
   if (auto c = Handle(Geom_ToroidalSurface)::DownCast(s); !c.IsNull())
-    return a = c->Position(), frame(num(c->MajorRadius()) + " + " + num(c->MinorRadius()) + "*cos(" + v + ")", num(c->MinorRadius()) + "*sin(" + v + ")");
+    return a = c->Position(), frame(sum({term(c->MajorRadius(), ""), term(c->MinorRadius(), "cos(" + v + ")")}), term(c->MinorRadius(), "sin(" + v + ")"));
   return std::nullopt;
 }
 

@@ -85,12 +85,37 @@ double SplineFn::derivativeAt(double x, int k) const {
 }
 
 bool SplineFn::range(double a, double b, double* lo, double* hi) const {
-  if (!(a >= this->lo() && b <= this->hi() && a <= b)) return false;
-  const int k0 = span(a), k1 = span(b);
-  const auto first = c_.begin() + (k0 - p_), last = c_.begin() + k1 + 1;
-  *lo = *std::min_element(first, last);
-  *hi = *std::max_element(first, last);
-  return true;
+  if (!(a <= b) || !std::isfinite(a) || !std::isfinite(b)) return false;
+  // Inside the domain: the hull of the coefficients of the pieces [a, b] spans.
+  const double ia = std::max(a, this->lo()), ib = std::min(b, this->hi());
+  bool any = false;
+  if (ia <= ib) {
+    const int k0 = span(ia), k1 = span(ib);
+    const auto first = c_.begin() + (k0 - p_), last = c_.begin() + k1 + 1;
+    *lo = *std::min_element(first, last), *hi = *std::max_element(first, last);
+    any = true;
+  }
+  // Past an end (an argument's enclosure widened by rounding, or a curve leaving the domain):
+  // the end piece continues as its Taylor polynomial, |f(x) - f(e)| <= Σ_k |f^(k)(e)|/k! δ^k.
+  for (const auto& [e, d] : {std::pair<double, double>{this->lo(), this->lo() - a}, {this->hi(), b - this->hi()}}) {
+    if (!(d > 0)) continue;
+    const double f = eval(e);
+    double spread = 0.0, power = 1.0, factorial = 1.0;
+    for (int k = 1; k <= p_; ++k) {
+      power *= d, factorial *= k;
+      spread += std::abs(derivativeAt(e, k)) / factorial * power;
+    }
+    // The rounding of f(e), of the derivatives and of the sum (de Boor's convex combinations
+    // round within a few ulps of the largest coefficient).
+    double largest = 0.0;
+    for (double c : c_) largest = std::max(largest, std::abs(c));
+    spread = spread * (1.0 + 1e-12) + 1e-13 * largest;
+    if (!std::isfinite(spread)) return false;
+    *lo = any ? std::min(*lo, f - spread) : f - spread;
+    *hi = any ? std::max(*hi, f + spread) : f + spread;
+    any = true;
+  }
+  return any;
 }
 
 std::vector<double> SplineFn::breaks() const {

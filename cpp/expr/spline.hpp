@@ -31,8 +31,8 @@ class SplineFn {
   const std::shared_ptr<const SplineFn>& derivative() const { return derivative_; }
   // The k-th derivative at x (0 past the degree).
   double derivativeAt(double x, int k) const;
-  // lo <= f <= hi on [a, b] (the coefficients of the pieces it spans: convex hull); false
-  // when [a, b] leaves the domain, where the hull does not hold.
+  // lo <= f <= hi on [a, b]: the coefficients of the pieces it spans (convex hull), and past
+  // the domain's ends the end pieces' Taylor bounds; false when [a, b] is not finite.
   bool range(double a, double b, double* lo, double* hi) const;
   // The distinct knots inside the domain, where a derivative may jump.
   std::vector<double> breaks() const;

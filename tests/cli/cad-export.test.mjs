@@ -111,12 +111,13 @@ async function exportAndReadBack(id, ext, scenePath = example(id)) {
 // The models whose shape is known (issue 36): the aeroplane one solid with no free edge; fig4a
 // one open shell whose free edges are the cylinder's far ring and the plane's outer one; fig8c
 // three open shells (a fill ringed by strips each), every strip's outer border and ends free;
-// the bottle one solid.
+// the bottle one solid; the imported part (a NURBS body, a cylinder, a blend and two fills) one solid.
 const KNOWN_TOPOLOGY = {
   'you2004-fig8d': { solids: 1, closedShells: 1, freeEdges: 0 },
   'you2004-fig4a': { solids: 0, shells: 1, freeEdges: 2 },
   'you2004-fig8c': { solids: 0, shells: 3, freeEdges: 36 },
   'bottle-solid': { solids: 1, closedShells: 1, freeEdges: 0 },
+  'cad-part': { solids: 1, closedShells: 1, freeEdges: 0 },
 };
 
 // Under AddressSanitizer (the sanitize row) two small examples; natively every one, the

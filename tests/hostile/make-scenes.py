@@ -129,6 +129,23 @@ checked = [
      'issue 38 #6: a 0.5 gap passed as G0 5e-11 once a patch at z = 1e10 grew the scene (tolerances were the whole scene\'s)'),
 ]
 
+# Issue 40: a "surface" given as NURBS.
+def nurbs_scene(edit):
+    n = {'degree': [1, 1], 'knots': [[0, 0, 1, 1], [0, 0, 1, 1]], 'points': [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0.2]]]}
+    edit(n)
+    return {'format': 'pdesurf-scene', 'version': 4, 'patches': [{'name': 'sheet', 'kind': 'surface', 'nurbs': n}]}
+
+def dense_nurbs(n):
+    n['degree'] = [3, 3]
+    n['points'] = [[[i, j, 0] for j in range(65)] for i in range(65)]
+    k = [0, 0, 0, 0] + list(range(1, 62)) + [62, 62, 62, 62]
+    n['knots'] = [k, k]
+
+def nurbs_domain(lo, hi):
+    def edit(n):
+        n['knots'] = [[lo, lo, hi, hi], [0, 0, 1, 1]]
+    return edit
+
 cases = [
     # file, scene (dict or raw text), grid, code, message substring, why
     ('float-overflow', with_(vase, set_boundary_x), 16, 'NonFinite', 'beyond what a float holds',
@@ -203,6 +220,20 @@ cases = [
      'issue 38 re-attack: two patches continuing one edge (each alone fine) were both certified'),
     ('chain-v-range-one-ulp', with_(bottle, chain_v_range_one_ulp), 16, 'InvalidField', '6.2831853071795871] differs from',
      'issue 38 messages: a v_range one ulp off 2*pi was "[0, 6.28319] differs from [0, 6.28319]"'),
+    ('nurbs-degree-26', nurbs_scene(lambda n: n.__setitem__('degree', [26, 1])), 16, 'InvalidField', 'patches[0].nurbs.degree[0]: expected an integer in 1..25',
+     'issue 40: an absurd degree, refused before any knot is read'),
+    ('nurbs-65x65-points', nurbs_scene(dense_nurbs), 16, 'TooLarge', 'patches[0].nurbs.points: 65 × 65 control points: at most 4096',
+     'issue 40: more control points than a surface may have, counted before they are read'),
+    ('nurbs-knots-decreasing', nurbs_scene(lambda n: n['knots'].__setitem__(1, [0, 1, 0, 1])), 16, 'InvalidField', 'patches[0].nurbs.knots[1]: knot 2 is smaller than the one before',
+     'issue 40: a knot vector that goes back'),
+    ('nurbs-weight-zero', nurbs_scene(lambda n: n.__setitem__('weights', [[1, 1], [1, 0]])), 16, 'InvalidField', 'patches[0].nurbs.weights[1][1]: a weight must be positive',
+     'issue 40: a zero weight (a pole at infinity)'),
+    ('nurbs-pole-text', nurbs_scene(lambda n: n['points'][1][0].__setitem__(2, 'nan')), 16, 'InvalidField', 'patches[0].nurbs.points[1][0][2]: expected a number',
+     'issue 40: a pole coordinate given as text'),
+    ('nurbs-poles-1e300', nurbs_scene(lambda n: n.__setitem__('points', [[[x * 1e300 for x in p] for p in row] for row in n['points']])), 16, 'NonFinite', "patch 'sheet'",
+     'issue 40: poles whose products overflow'),
+    ('nurbs-domain-1e-300', nurbs_scene(nurbs_domain(0, 1e-300)), 16, 'NonFinite', "patch 'sheet'",
+     'issue 40: a knot span of 1e-300, whose derivatives overflow'),
 ]
 
 os.makedirs(os.path.join(HERE, 'scenes'), exist_ok=True)

@@ -68,3 +68,17 @@ test('a derived text over the expression limit is not written: the end keeps its
   assert.equal(state.text(), before, 'nothing half-applied');
   assert.equal(detachRefusal('u1', result.patches[0].ends.u0.derived), null);
 });
+
+test('an end on a NURBS surface (an imported face) is not detached: its border is B-spline data, said so', () => {
+  const scene = JSON.parse(readFileSync(new URL('../../examples/cad-part.json', import.meta.url), 'utf8'));
+  const { state, result } = solvedState(scene);
+  const shoulder = result.patches.find((p) => p.name === 'shoulder');
+  const onBody = shoulder.ends.u0.derived, onNeck = shoulder.ends.u1.derived;
+  assert.ok(onBody.x.some((t) => t.includes('bspline(')), onBody.x.join(' | '));
+  const why = detachRefusal('u0', onBody);
+  assert.match(why, /^cannot detach: this end meets a NURBS surface/);
+  const before = state.text();
+  assert.throws(() => state.detachEnd('shoulder', 'u0', onBody), (e) => e.message === why);
+  assert.equal(state.text(), before, 'nothing half-applied');
+  assert.equal(detachRefusal('u1', onNeck), null, 'the neck is typed expressions: detachable');
+});

@@ -228,6 +228,11 @@ const PRIMES = ['', 'ᵤ', 'ᵤᵤ', 'ᵤᵤᵤ'];
 export function detachRefusal(end, derived) {
   for (const axis of AXES) {
     const list = Array.isArray(derived?.[axis]) ? derived[axis] : [];
+    // A NURBS surface's border is B-spline data the expression language shows but cannot type.
+    if (list.some((t) => typeof t === 'string' && t.includes('bspline('))) {
+      return 'cannot detach: this end meets a NURBS surface, whose border is B-spline data (shown as bspline(…)), '
+        + 'not an expression one can type; the end stays by reference';
+    }
     const k = list.findIndex((t) => typeof t === 'string' && t.length > EXPRESSION_CHARS);
     if (k >= 0) {
       return `cannot detach: the derived ${axis}${PRIMES[k] ?? `^(${k})`}(${end === 'u0' ? 0 : 1}) has ${list[k].length} characters, `

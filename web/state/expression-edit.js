@@ -70,14 +70,34 @@ const DEFAULT_RANGES = { t_range: [0, 1], v_range: [0, '2*pi'] };
 
 /** One end of a surface's t_range or v_range, as text (a number or an expression). */
 export function surfaceRangeEnd(patch, key, k) {
-  const range = Array.isArray(patch[key]) ? patch[key] : DEFAULT_RANGES[key];
+  const range = Array.isArray(patch[key]) ? patch[key] : (nurbsDomain(patch)?.[key] ?? DEFAULT_RANGES[key]);
   return asText(range[k]);
+}
+
+/**
+ * A "surface" given as NURBS (docs/scene-format-v4.md): its domain { t_range, v_range } from
+ * its knots (what the core takes when the ranges are left out), else null.
+ */
+export function nurbsDomain(patch) {
+  const n = patch?.nurbs;
+  if (!n || !Array.isArray(n.degree) || !Array.isArray(n.knots) || !Array.isArray(n.points) || !Array.isArray(n.points[0])) return null;
+  const counts = [n.points.length, n.points[0].length];
+  const ends = (d) => [n.knots[d]?.[n.degree[d]], n.knots[d]?.[counts[d]]];
+  return { t_range: ends(0), v_range: ends(1) };
+}
+
+/** What a NURBS surface is, in words, for the panel (text: it may come from a file). */
+export function nurbsSummary(patch) {
+  const n = patch.nurbs;
+  const rows = Array.isArray(n?.points) ? n.points.length : 0, cols = Array.isArray(n?.points?.[0]) ? n.points[0].length : 0;
+  const degree = Array.isArray(n?.degree) ? n.degree.join(' × ') : '?';
+  return `NURBS surface: degree ${degree}, ${rows} × ${cols} control points${n?.weights ? ', rational' : ''} (its points are data, not typed)`;
 }
 
 /** Write one end of a range: a plain number stays a number (short links), else the text. */
 export function setSurfaceRangeEnd(patch, key, k, text) {
   if (key !== 't_range' && key !== 'v_range') throw new Error(`no range ${JSON.stringify(key)}`);
-  const range = Array.isArray(patch[key]) ? [...patch[key]] : [...DEFAULT_RANGES[key]];
+  const range = Array.isArray(patch[key]) ? [...patch[key]] : [...(nurbsDomain(patch)?.[key] ?? DEFAULT_RANGES[key])];
   const t = String(text).trim();
   range[k] = t !== '' && Number.isFinite(Number(t)) ? Number(t) : t;
   patch[key] = range;

@@ -7,7 +7,7 @@
 import { escapeHtml } from './html-text.js';
 import { buildExpressionField, fieldForMessage } from './expression-field.js';
 import {
-  AXES, ENDS, boundaryPath, forcePath, surfacePath, boundarySlot, forceOf, surfaceCoordinate, RANGE_ENDS, surfaceRangeEnd,
+  AXES, ENDS, boundaryPath, forcePath, surfacePath, boundarySlot, forceOf, surfaceCoordinate, RANGE_ENDS, surfaceRangeEnd, nurbsSummary,
 } from '../state/expression-edit.js';
 import { isByReference } from '../state/ends-edit.js';
 
@@ -83,12 +83,20 @@ export function buildExpressionFolders(gui, scene, solved, onEdit) {
       const folder = gui.addFolder(escapeHtml(`Surface “${patch.name}”`));
       folder.domElement.classList.add('expr-folder');
       folder.domElement.dataset.surface = patch.name;
-      for (const axis of AXES) {
-        const f = buildExpressionField(folder, {
-          label: `${axis}(t,v)`, title: `${axis} of the surface, a function of t and v`, path: surfacePath(index, axis),
-          value: surfaceCoordinate(patch, axis), onEdit: edit(patch.name, { kind: 'surface', axis }, () => f),
-        });
-        surfaceFields.push(f);
+      if (patch.nurbs) {  // data from a file (pdesurf import): said, not typed
+        const line = document.createElement('div');
+        line.className = 'end-note';
+        line.dataset.nurbs = patch.name;
+        line.textContent = nurbsSummary(patch); // text: never markup
+        folder.$children.append(line);
+      } else {
+        for (const axis of AXES) {
+          const f = buildExpressionField(folder, {
+            label: `${axis}(t,v)`, title: `${axis} of the surface, a function of t and v`, path: surfacePath(index, axis),
+            value: surfaceCoordinate(patch, axis), onEdit: edit(patch.name, { kind: 'surface', axis }, () => f),
+          });
+          surfaceFields.push(f);
+        }
       }
       for (const [key, k, label] of RANGE_ENDS) {
         const f = buildExpressionField(folder, {
