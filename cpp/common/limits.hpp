@@ -54,6 +54,13 @@ constexpr size_t kSceneDerivedNodes = size_t{1} << 20;
 // sample of the surface, so 64² points at 64² samples stay ~0.1 s to draw natively.
 constexpr int kNurbsDegree = 25;
 constexpr size_t kNurbsPoints = 4096;
+// And the work of one evaluation of it, counted before it is built: the de Boor steps of its
+// spline nodes, Σ (degree + 1)² (a basis function per row of the direction summed over, a
+// curve per coordinate and the weights along the other). A 64 × 64 bicubic costs 5 120; the
+// heaviest typed expression (1 000 characters) ~500 operations. With it, one surface on the
+// largest grid (2048²) stays within minutes natively, where degree 25 over 64 rows (216 000)
+// would take hours.
+constexpr size_t kNurbsEvaluation = 8192;
 // A derived condition's text (shown in the page, typed by detach) is elided past this.
 constexpr size_t kDerivedTextChars = 2000;
 

@@ -101,6 +101,11 @@ std::array<Expr, 3> parseNurbs(const json& j, const std::string& outer, NurbsDom
   const int outerDeg = overT ? p : q, innerDeg = overT ? q : p;
   const std::vector<double>& outerKnots = knots[overT ? 0 : 1];
   const std::vector<double>& innerKnots = knots[overT ? 1 : 0];
+  const size_t work = outer_n * (size_t(outerDeg + 1) * size_t(outerDeg + 1) + (rational ? 4 : 3) * size_t(innerDeg + 1) * size_t(innerDeg + 1));
+  if (work > limits::kNurbsEvaluation)
+    fail(ErrorCode::TooLarge, path, "one evaluation would take " + std::to_string(work) + " de Boor steps (" + std::to_string(outer_n) +
+                                        " rows of degree " + std::to_string(outerDeg) + " by " + std::to_string(innerDeg) + "): at most " +
+                                        std::to_string(limits::kNurbsEvaluation) + "; fewer rows or a lower degree");
   const Expr outerVar = variable(overT ? ExprVar::U : ExprVar::V), innerVar = variable(overT ? ExprVar::V : ExprVar::U);
   std::array<Expr, 3> num = {constant(0.0), constant(0.0), constant(0.0)};
   Expr den = constant(0.0);

@@ -141,6 +141,12 @@ def dense_nurbs(n):
     k = [0, 0, 0, 0] + list(range(1, 62)) + [62, 62, 62, 62]
     n['knots'] = [k, k]
 
+def heavy_nurbs(n):
+    n['degree'] = [25, 25]
+    n['points'] = [[[i, j, 0] for j in range(64)] for i in range(64)]
+    k = [0] * 26 + list(range(1, 39)) + [39] * 26
+    n['knots'] = [k, k]
+
 def nurbs_domain(lo, hi):
     def edit(n):
         n['knots'] = [[lo, lo, hi, hi], [0, 0, 1, 1]]
@@ -224,6 +230,8 @@ cases = [
      'issue 40: an absurd degree, refused before any knot is read'),
     ('nurbs-65x65-points', nurbs_scene(dense_nurbs), 16, 'TooLarge', 'patches[0].nurbs.points: 65 × 65 control points: at most 4096',
      'issue 40: more control points than a surface may have, counted before they are read'),
+    ('nurbs-degree-25-64-rows', nurbs_scene(heavy_nurbs), 16, 'TooLarge', 'patches[0].nurbs: one evaluation would take',
+     'issue 40: degree 25 over 64 rows, an evaluation of ~200 000 de Boor steps per sample: hours on the largest grid'),
     ('nurbs-knots-decreasing', nurbs_scene(lambda n: n['knots'].__setitem__(1, [0, 1, 0, 1])), 16, 'InvalidField', 'patches[0].nurbs.knots[1]: knot 2 is smaller than the one before',
      'issue 40: a knot vector that goes back'),
     ('nurbs-weight-zero', nurbs_scene(lambda n: n.__setitem__('weights', [[1, 1], [1, 0]])), 16, 'InvalidField', 'patches[0].nurbs.weights[1][1]: a weight must be positive',
