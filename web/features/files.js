@@ -1,6 +1,7 @@
 // Wiring of the "File" folder: exports (scene JSON; OBJ, STL, GLB, 3MF of the watertight mesh
 // and STEP, IGES, 3dm fitted, both made in the solver's worker; PNG; web/export/) and
-// opening a scene file by the picker or by dropping it on the page (web/import/). A file
+// opening a scene file, or a .3dm file's surfaces (web/cad/read-3dm.js), by the picker or by
+// dropping it on the page (web/import/). A file
 // that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
 // surfaces, the panel, the example id and the URL hash. For the second case the scene shown
 // before is remembered and shown again (with its camera) when the file's first solve fails.
@@ -47,11 +48,26 @@ export function createFilesFeature({ panel, viewer, state, status, hooks, solver
     status.error(msg);
   }
 
+  // A CAD file's faces as a scene (docs/cad-import.md): .3dm through rhino3dm in its worker;
+  // STEP and IGES through `pdesurf import` for now (the page has no Open CASCADE yet).
+  async function readCadFile(file, name) {
+    const ext = name.toLowerCase().split('.').pop();
+    if (['step', 'stp', 'igs', 'iges'].includes(ext)) {
+      throw new Error(`the page does not read ${ext.toUpperCase()} files yet: \`pdesurf import ${name} -o scene.json\` writes its faces as a scene, which opens here`);
+    }
+    const { MAX_CAD_FILE_BYTES } = await import('../cad/read-3dm.js');
+    if (file.size > MAX_CAD_FILE_BYTES) throw new Error(`the file has ${file.size} bytes: at most ${MAX_CAD_FILE_BYTES >> 20} MB are imported`);
+    status.info(`reading ${name} (rhino3dm loads on first use)…`);
+    const { import3dm } = await import('../cad/export-3dm.js');
+    const scene = await import3dm(await file.arrayBuffer(), name);
+    return { scene, title: null }; // the file name is the title
+  }
+
   async function openFile(file) {
     const name = file.name || 'the file';
     let read;
     try {
-      read = await (await sceneFile()).readSceneFile(file);
+      read = /\.(3dm|step|stp|igs|iges)$/i.test(name) ? await readCadFile(file, name) : await (await sceneFile()).readSceneFile(file);
     } catch (err) {
       refuse(name, err);
       return;

@@ -1,0 +1,103 @@
+// Importing a .3dm file (issue 40, web/cad/read-3dm.js): models exported as the page does it
+// (the module's exportCad with format '3dm', then web/cad/write-3dm.js) and read back as
+// scenes are the same surfaces at the same (u, v) within each face's certified deviation,
+// named as before; blends by reference to the imported faces certify as on the originals;
+// surfaces written by rhino3dm itself (a rational cylinder, closed in u: swapped) come back
+// exact; bad files are named errors before the work.
+//   node --test tests/js/read-3dm.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadTestSolver, wasmDir } from './test-solver.mjs';
+import { write3dm } from '../../web/cad/write-3dm.js';
+import { read3dm, CadFileError } from '../../web/cad/read-3dm.js';
+import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
+
+const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const skip = fs.existsSync(new URL('pdesurf.wasm', wasmDir)) ? false : `no wasm build in ${wasmDir}`;
+const example = (id) => JSON.parse(fs.readFileSync(path.join(REPO, 'examples', `${id}.json`), 'utf8'));
+const PRIMARY = ['surface', 'ruled', 'separable'];
+const grid = { nu: 9, nv: 13 };
+
+const solverPromise = skip ? null : loadTestSolver();
+
+async function roundTrip(solver, scene) {
+  const fit = solver.exportCad(JSON.stringify(scene), { format: '3dm' });
+  const bytes = await write3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title, breps: fit.breps, archive: fit.archive });
+  return { fit, imported: await read3dm(bytes, { fileName: 'model.3dm' }) };
+}
+
+const worstGap = (a, b) => a.reduce((m, x, k) => (k % 3 ? m : Math.max(m, Math.hypot(x - b[k], a[k + 1] - b[k + 1], a[k + 2] - b[k + 2]))), 0);
+
+for (const id of ['ref-sphere-fillet', 'ref-torus-plane', 'ref-offset-cylinders-g2', 'cad-part']) {
+  test(`${id}: exported to .3dm and imported, the same surfaces; its blends by reference certify on them`, { skip }, async () => {
+    const solver = await solverPromise;
+    const scene = example(id);
+    const { fit, imported } = await roundTrip(solver, scene);
+    assert.deepEqual(imported.patches.map((p) => p.name).sort(), scene.patches.map((p) => p.name).sort(), 'every face, named as its patch');
+    const original = solver.solve(JSON.stringify(scene), grid).patches;
+    const back = solver.solve(JSON.stringify(imported), grid).patches;
+    for (const face of fit.faces) {
+      const a = original.find((p) => p.name === face.name), b = back.find((p) => p.name === face.name);
+      const size = Math.max(...a.positions.map(Math.abs));
+      const gap = worstGap(a.positions, b.positions);
+      // positions are float32: their rounding beside the certified deviation
+      assert.ok(gap <= face.deviation + 2e-7 * size, `${id} ${face.name}: ${gap} from the original, certified ${face.deviation}`);
+    }
+    // The primaries replaced by their imported faces: the blends' joins certify again.
+    const rebuilt = structuredClone(scene);
+    rebuilt.version = 4;
+    rebuilt.patches = scene.patches.map((p) => {
+      if (!PRIMARY.includes(p.kind)) return p;
+      const face = imported.patches.find((q) => q.name === p.name);
+      return p.meets ? { ...face, meets: p.meets } : face;
+    });
+    const report = solver.solve(JSON.stringify(rebuilt), { ...grid, joins: true }).report;
+    assert.ok(report.joins.length >= 2);
+    for (const j of [...report.joins, ...report.seams]) assert.ok(j.ok, `${id}: ${j.patch}:${j.end} - ${j.surface}:${j.edge} G0 ${j.g0} G1 ${j.g1Deg}`);
+    assert.ok(report.ok, `${id}: the imported model certifies`);
+  });
+}
+
+test('a rational cylinder written by rhino3dm comes back exact, swapped so v runs around', { skip }, async () => {
+  const rh = await loadRhino3dm();
+  const file = new rh.File3dm();
+  const attributes = new rh.ObjectAttributes();
+  attributes.name = 'tube';
+  file.objects().add(rh.Brep.createFromSurface(rh.NurbsSurface.createFromCylinder(new rh.Cylinder(new rh.Circle(2.0), 3.0))), attributes);
+  const scene = await read3dm(file.toByteArray(), { fileName: 'tube.3dm' });
+  assert.equal(scene.patches.length, 1);
+  const [tube] = scene.patches;
+  assert.equal(tube.name, 'tube');
+  assert.deepEqual(tube.t_range, [0, 3], 't along the axis');
+  assert.deepEqual(tube.v_range, [0, 2 * Math.PI], 'v around');
+  assert.ok(tube.nurbs.weights, 'rational');
+  const solver = await solverPromise;
+  const [patch] = solver.solve(JSON.stringify(scene), grid).patches;
+  let worst = 0;
+  for (let k = 0; k < patch.positions.length; k += 3) worst = Math.max(worst, Math.abs(Math.hypot(patch.positions[k], patch.positions[k + 1]) - 2));
+  assert.ok(worst < 1e-6, `radius within float32 of 2: ${worst}`);
+});
+
+test('bad .3dm files are named errors before the work', { skip }, async () => {
+  const rh = await loadRhino3dm();
+  const refusal = async (bytes, code, words, options = {}) => {
+    await assert.rejects(read3dm(bytes, options), (e) => e instanceof CadFileError && e.code === code && words.test(e.message), String(words));
+  };
+  await refusal(new Uint8Array(64), 'ParseError', /could not read it as a \.3dm file/);
+  // The size is judged before rhino3dm is even loaded.
+  await refusal({ byteLength: 65 << 20 }, 'TooLarge', /at most 64 MB/, { loadRhino: () => { throw new Error('loaded'); } });
+  const many = new rh.File3dm();
+  for (let k = 0; k < 65; k++) many.objects().add(rh.NurbsSurface.createFromCylinder(new rh.Cylinder(new rh.Circle(1 + k), 1)), new rh.ObjectAttributes());
+  await refusal(many.toByteArray(), 'TooLarge', /more than 64 faces/);
+  const dense = rh.NurbsSurface.create(3, false, 4, 4, 70, 70);
+  for (let i = 0; i < 70; i++) for (let j = 0; j < 70; j++) dense.points().set(i, j, [i, j, 0, 1]);
+  for (let k = 0; k < dense.knotsU().count; k++) dense.knotsU().set(k, k), dense.knotsV().set(k, k);
+  const one = new rh.File3dm();
+  one.objects().add(dense, new rh.ObjectAttributes());
+  await refusal(one.toByteArray(), 'TooLarge', /70 × 70 control points/);
+  const empty = new rh.File3dm();
+  await refusal(empty.toByteArray(), 'InvalidField', /no surfaces/);
+});
