@@ -32,8 +32,13 @@ const rhino3dmUrl = {
     build.onLoad({ filter: /[\\/]web[\\/]cad[\\/]rhino3dm-url\.js$/ }, () => ({
       contents: "export const RHINO3DM_URL = new URL('./rhino3dm/rhino3dm.module.min.js', import.meta.url).href;",
     }));
+    // Open CASCADE's wasm build (the STEP reader, web/cad/occt-url.js), copied to occt/ the same way.
+    build.onLoad({ filter: /[\\/]web[\\/]cad[\\/]occt-url\.js$/ }, () => ({
+      contents: "export const OCCT_URL = new URL('./occt/replicad_single.js', import.meta.url).href;",
+    }));
   },
 };
+const OCCT_FILES = ['replicad_single.js', 'replicad_single.wasm'];
 
 // Three bundles: the page, the solver worker it starts (new URL('./solver-worker.js',
 // import.meta.url) resolves beside the page's bundle), and the .3dm writer's worker
@@ -45,6 +50,7 @@ const result = await esbuild.build({
   entryPoints: {
     main: path.join(ROOT, 'web', 'main.js'),
     'rhino-worker': path.join(ROOT, 'web', 'cad', 'rhino-worker.js'),
+    'occt-worker': path.join(ROOT, 'web', 'cad', 'occt-worker.js'),
   },
   plugins: [rhino3dmUrl],
   outdir: OUT,
@@ -101,6 +107,9 @@ fs.writeFileSync(path.join(OUT, 'style.css'), ['style.css', 'panel.css'].map((f)
 const RHINO3DM = path.join(ROOT, 'node_modules', 'rhino3dm');
 fs.mkdirSync(path.join(OUT, 'rhino3dm'));
 for (const f of RHINO3DM_FILES) fs.copyFileSync(path.join(RHINO3DM, f), path.join(OUT, 'rhino3dm', f));
+const OCCT = path.join(ROOT, 'node_modules', 'replicad-opencascadejs', 'dist');
+fs.mkdirSync(path.join(OUT, 'occt'));
+for (const f of OCCT_FILES) fs.copyFileSync(path.join(OCCT, f), path.join(OUT, 'occt', f));
 
 // Precompressed siblings: brotli at its best (built once), gzip for clients without it.
 // rhino3dm (fetched on the first .3dm export only) at quality 9: 11 took about 5 s of every
@@ -120,6 +129,9 @@ for (const f of ['pdesurf.js', 'pdesurf.wasm']) {
 }
 // rhino3dm's files apart: they are not part of what the page loads.
 const rhino = RHINO3DM_FILES.map((f) => compress(path.join(OUT, 'rhino3dm', f), 9));
+// Open CASCADE's 23 MB at brotli quality 5 (a second here; 9 took tens of seconds for a few
+// percent): fetched on the first STEP file only.
+const occt = OCCT_FILES.map((f) => compress(path.join(OUT, 'occt', f), 5));
 const kib = (list, key) => (list.reduce((sum, s) => sum + s[key], 0) / 1024).toFixed(0);
 console.log(`build-web: ${path.relative(ROOT, OUT)}/ written; ${sizes.length} files, ${kib(sizes, 'raw')} KiB, ${kib(sizes, 'br')} KiB brotli` +
-  ` (${Object.keys(result.metafile.outputs).length + Object.keys(workerResult.metafile.outputs).length} bundle outputs); rhino3dm/ on first .3dm export: ${kib(rhino, 'raw')} KiB, ${kib(rhino, 'br')} KiB brotli`);
+  ` (${Object.keys(result.metafile.outputs).length + Object.keys(workerResult.metafile.outputs).length} bundle outputs); rhino3dm/ on first .3dm export or opening: ${kib(rhino, 'raw')} KiB, ${kib(rhino, 'br')} KiB brotli; occt/ on first STEP opening: ${kib(occt, 'raw')} KiB, ${kib(occt, 'br')} KiB brotli`);

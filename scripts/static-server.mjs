@@ -41,10 +41,12 @@ function sendText(res, status, text, extraHeaders = {}) {
 
 // The only trees served, as URL segments -> the same path under the root: the page, the
 // examples it fetches, the docs its help links, and the npm packages it loads (pako: the
-// link decoder; rhino3dm: the .3dm writer, web/cad/rhino3dm-url.js; @jscadui/3mf-export and
+// link decoder; rhino3dm: the .3dm writer and reader, web/cad/rhino3dm-url.js; Open CASCADE's
+// wasm build: the STEP reader, web/cad/occt-url.js; @jscadui/3mf-export and
 // fflate: the 3MF writer and its zip), and the benchmark's
 // bare three.js page (bench/pages/, scripts/bench-page.mjs).
 const TREES = [['web'], ['examples'], ['docs'], ['node_modules', 'three'], ['node_modules', 'pako'], ['node_modules', 'rhino3dm'],
+  ['node_modules', 'replicad-opencascadejs', 'dist'],
   ['node_modules', '@jscadui', '3mf-export'], ['node_modules', 'fflate'], ['bench', 'pages']];
 // /wasm/<name> comes from the wasm build dir, which also holds CMake files and a symlink
 // to system headers: only its top-level .js and .wasm files.
@@ -66,9 +68,10 @@ function contentSecurityPolicy(inlineHashes) {
 }
 
 // The .3dm writer's worker (web/cad/rhino-worker.js, bundled as /app/rhino-worker.js) runs
-// rhino3dm, whose embind glue needs eval. A worker takes the policy sent with its own script,
+// rhino3dm, whose embind glue needs eval; so does Open CASCADE's in the STEP reader's worker
+// (web/cad/occt-worker.js, /app/occt-worker.js). A worker takes the policy sent with its own script,
 // so eval is allowed there only: no DOM, no inline script, the same origin for the rest.
-const EVAL_WORKERS = new Set(['/web/cad/rhino-worker.js', '/app/rhino-worker.js']);
+const EVAL_WORKERS = new Set(['/web/cad/rhino-worker.js', '/app/rhino-worker.js', '/web/cad/occt-worker.js', '/app/occt-worker.js']);
 const EVAL_WORKER_POLICY = [
   "default-src 'self'", "script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'", "connect-src 'self'",
   "object-src 'none'", "base-uri 'none'",

@@ -51,9 +51,9 @@ constexpr double kEndScale = 100;
 constexpr size_t kSceneDerivedNodes = size_t{1} << 20;
 // A "surface" given as NURBS (scene/nurbs_json.hpp): its degree in each direction (Open
 // CASCADE's own maximum) and its control points. Each point costs one B-spline evaluation per
-// sample of the surface, so 64² points at 64² samples stay ~0.1 s to draw natively.
+// sample of the surface only along its rows (below); the scene's 1 MiB of text holds ~16 000 points.
 constexpr int kNurbsDegree = 25;
-constexpr size_t kNurbsPoints = 4096;
+constexpr size_t kNurbsPoints = 16384;  // 128²: pdesurf's own CAD faces reach 28 × 153
 // And the work of one evaluation of it, counted before it is built: the de Boor steps of its
 // spline nodes, Σ (degree + 1)² (a basis function per row of the direction summed over, a
 // curve per coordinate and the weights along the other). A 64 × 64 bicubic costs 5 120; the

@@ -1,18 +1,22 @@
-// Opening a CAD file in the page (issue 40, web/features/files.js, web/cad/read-3dm.js): a .3dm
-// file — the example part exported as the page does it, made here under node — opens as a
-// scene of its faces, each a NURBS surface said as data in the panel and named as before,
-// drawn, and its joins' faces ready to blend; a STEP file is refused by name with the command
-// that reads it; a bad .3dm keeps what was shown. At 1280×800 and 390×844.
-// Screenshots: build/browser/open-cad-*.png.
+// Opening a CAD file in the page (issue 40, web/features/files.js, web/cad/read-3dm.js and
+// read-step.js): a .3dm file — the example part exported as the page does it, made here under
+// node — opens as a scene of its faces, each a NURBS surface said as data in the panel and named
+// as before; the part's STEP file opens through Open CASCADE (its neck a typed cylinder) and
+// its two faces are blended G2 in the Build folder, both joins certified; an
+// IGES file is refused by name with the command that reads it; a bad .3dm or STEP keeps what
+// was shown. At 1280×800 and 390×844. Screenshots: build/browser/open-cad-*.png, open-step-*.png.
 //   PDESURF_WASM_DIR=build/wasm node --test tests/browser/open-cad.test.mjs
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { skip, startHarness, hooks, shoot, solvedAfter, sameChecksum, ROOT } from './harness.mjs';
+import { solving } from './build-tools.mjs';
 import { loadSolver } from '../../web/solver/pdesurf-solver.js';
 import { write3dm } from '../../web/cad/write-3dm.js';
 
+const APP = process.env.PDESURF_APP_DIR || path.join(ROOT, 'build', 'web');
+const built = fs.existsSync(path.join(APP, 'index.html')) && fs.existsSync(path.join(APP, 'occt-worker.js'));
 const WASM_DIR = process.env.PDESURF_WASM_DIR ? path.resolve(process.env.PDESURF_WASM_DIR) : path.join(ROOT, 'build', 'wasm');
 
 async function partAs3dm() {
@@ -44,7 +48,8 @@ describe('opening CAD files', { skip }, () => {
         return page.locator('#status').textContent();
       };
       const before = await hooks(page);
-      assert.match(await refused('part.step', Buffer.from('ISO-10303-21;\n')), /^cannot open part\.step: the page does not read STEP files yet: `pdesurf import part\.step -o scene\.json`/);
+      assert.match(await refused('part.igs', Buffer.from('S      1\n')), /^cannot open part\.igs: the page does not read IGES files: `pdesurf import part\.igs -o scene\.json`/);
+      assert.match(await refused('junk.step', Buffer.from('ISO-10303-21;\n')), /^cannot open junk\.step: ParseError: Open CASCADE could not read it as STEP/);
       assert.match(await refused('junk.3dm', Buffer.alloc(64)), /^cannot open junk\.3dm: ParseError: rhino3dm could not read it as a \.3dm file/);
       const kept = await hooks(page);
       assert.ok(sameChecksum(kept.checksum, before.checksum), 'the drawn surfaces stayed');
@@ -64,9 +69,40 @@ describe('opening CAD files', { skip }, () => {
       }
       await page.locator('#panel [data-nurbs="body"]').scrollIntoViewIfNeeded();
       await shoot(page, `open-cad-${viewport.width}.png`);
+
+      // The example part's STEP file (examples/cad/part.step) through Open CASCADE in its worker.
+      const again = (await hooks(page)).solveCount;
+      await pick('part.step', fs.readFileSync(path.join(ROOT, 'examples', 'cad', 'part.step')));
+      const opened = await solvedAfter(page, again);
+      assert.equal(opened.lastError, null);
+      assert.match(await page.locator('#panel [data-nurbs="face 1"]').textContent(), /^NURBS surface: degree 3 × 5, 6 × \d+ control points/);
+      assert.equal(await page.locator('#panel [data-surface="face 2"]').count(), 1, 'the neck: a surface of typed expressions');
+      assert.equal(await page.locator('#panel [data-nurbs="face 2"]').count(), 0);
+      // Blended as a designer would, in the Build folder: the body's top rim into the neck's
+      // bottom one, G2; the Joins folder then certifies both joins.
+      const control = (key) => page.locator(`#panel [data-build="${key}"] select`);
+      await control('blend-continuity').selectOption({ label: 'curvature (G2)' });
+      await control('blend-a').selectOption({ label: 'face 1 · t1' });
+      await control('blend-b').selectOption({ label: 'face 2 · t0' });
+      await solving(page, () => page.locator('#panel .build-folder button', { hasText: 'make the blend' }).first().click());
+      assert.equal((await hooks(page)).lastError, null);
+      await page.waitForFunction(() => document.querySelectorAll('#panel [data-join][data-verdict="ok"]').length === 2, null, { timeout: 30_000 });
+      await page.locator('#panel .outliner').scrollIntoViewIfNeeded();
+      await shoot(page, `open-step-${viewport.width}.png`);
       await page.close();
     });
   }
+
+  it('the production page opens the STEP file through its own copy of Open CASCADE', { skip: built ? false : `no ${APP}/occt-worker.js: run node scripts/build-web.mjs` }, async () => {
+    const page = await h.open('/app/#example=you2004-fig2a', { viewport: { width: 1280, height: 800 } });
+    page.on('pageerror', (e) => errors.push(String(e)));
+    const count = (await hooks(page)).solveCount;
+    await page.locator('[data-file="input"]').setInputFiles({ name: 'part.step', mimeType: 'application/octet-stream', buffer: fs.readFileSync(path.join(ROOT, 'examples', 'cad', 'part.step')) });
+    const opened = await solvedAfter(page, count);
+    assert.equal(opened.lastError, null);
+    assert.equal(await page.locator('#panel [data-nurbs="face 1"]').count(), 1);
+    await page.close();
+  });
 
   it('left no page errors', () => {
     assert.deepEqual(errors, []);

@@ -100,7 +100,7 @@ test('import: bad files are named errors and write nothing', { skip: sanitized }
 test('import: the example part (examples/cad/part.step) is what its script makes, imports as the example says, and certifies closed', { skip: sanitized }, () => {
   const scene = JSON.parse(readFileSync(example('cad-part'), 'utf8'));
   const imported = (path) => {
-    const r = run(['import', path]);
+    const r = spawnSync(cli, ['import', path], { encoding: 'utf8', maxBuffer: 1 << 26 });
     assert.equal(r.status, 0, r.stderr);
     return JSON.parse(r.stdout).patches;
   };

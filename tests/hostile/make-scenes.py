@@ -137,8 +137,8 @@ def nurbs_scene(edit):
 
 def dense_nurbs(n):
     n['degree'] = [3, 3]
-    n['points'] = [[[i, j, 0] for j in range(65)] for i in range(65)]
-    k = [0, 0, 0, 0] + list(range(1, 62)) + [62, 62, 62, 62]
+    n['points'] = [[[i, j, 0] for j in range(129)] for i in range(129)]
+    k = [0, 0, 0, 0] + list(range(1, 126)) + [126, 126, 126, 126]
     n['knots'] = [k, k]
 
 def heavy_nurbs(n):
@@ -228,7 +228,7 @@ cases = [
      'issue 38 messages: a v_range one ulp off 2*pi was "[0, 6.28319] differs from [0, 6.28319]"'),
     ('nurbs-degree-26', nurbs_scene(lambda n: n.__setitem__('degree', [26, 1])), 16, 'InvalidField', 'patches[0].nurbs.degree[0]: expected an integer in 1..25',
      'issue 40: an absurd degree, refused before any knot is read'),
-    ('nurbs-65x65-points', nurbs_scene(dense_nurbs), 16, 'TooLarge', 'patches[0].nurbs.points: 65 × 65 control points: at most 4096',
+    ('nurbs-129x129-points', nurbs_scene(dense_nurbs), 16, 'TooLarge', 'patches[0].nurbs.points: 129 × 129 control points: at most 16384',
      'issue 40: more control points than a surface may have, counted before they are read'),
     ('nurbs-degree-25-64-rows', nurbs_scene(heavy_nurbs), 16, 'TooLarge', 'patches[0].nurbs: one evaluation would take',
      'issue 40: degree 25 over 64 rows, an evaluation of ~200 000 de Boor steps per sample: hours on the largest grid'),

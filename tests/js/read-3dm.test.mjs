@@ -92,12 +92,12 @@ test('bad .3dm files are named errors before the work', { skip }, async () => {
   const many = new rh.File3dm();
   for (let k = 0; k < 65; k++) many.objects().add(rh.NurbsSurface.createFromCylinder(new rh.Cylinder(new rh.Circle(1 + k), 1)), new rh.ObjectAttributes());
   await refusal(many.toByteArray(), 'TooLarge', /more than 64 faces/);
-  const dense = rh.NurbsSurface.create(3, false, 4, 4, 70, 70);
-  for (let i = 0; i < 70; i++) for (let j = 0; j < 70; j++) dense.points().set(i, j, [i, j, 0, 1]);
+  const dense = rh.NurbsSurface.create(3, false, 4, 4, 130, 130);
+  for (let i = 0; i < 130; i++) for (let j = 0; j < 130; j++) dense.points().set(i, j, [i, j, 0, 1]);
   for (let k = 0; k < dense.knotsU().count; k++) dense.knotsU().set(k, k), dense.knotsV().set(k, k);
   const one = new rh.File3dm();
   one.objects().add(dense, new rh.ObjectAttributes());
-  await refusal(one.toByteArray(), 'TooLarge', /70 × 70 control points/);
+  await refusal(one.toByteArray(), 'TooLarge', /130 × 130 control points/);
   const empty = new rh.File3dm();
   await refusal(empty.toByteArray(), 'InvalidField', /no surfaces/);
 });

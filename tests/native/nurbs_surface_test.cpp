@@ -328,9 +328,9 @@ TEST_CASE("nurbs: bad NURBS data is refused by name") {
             .find("TooLarge") == std::string::npos);  // 65 × 1 is within the count (refused for its degree instead)
   json big = good;
   big["points"] = json::array();
-  for (int i = 0; i < 65; ++i) {
+  for (int i = 0; i < 129; ++i) {
     json row = json::array();
-    for (int k = 0; k < 65; ++k) row.push_back({0, 0, 0});
+    for (int k = 0; k < 129; ++k) row.push_back({0, 0, 0});
     big["points"].push_back(row);
   }
   CHECK(parseErrorOf(sceneOf({surfacePatch("s", big)}).dump()).rfind("TooLarge: patches[0].nurbs.points", 0) == 0);

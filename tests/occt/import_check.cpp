@@ -283,20 +283,20 @@ void hostile() {
   writeStep(many, manyPath);
   expectRefusal("65 faces", manyPath, pdesurf::ErrorCode::TooLarge, "65 faces: a scene holds at most 64 patches");
 
-  // 70 × 70 control points: past kNurbsPoints.
-  TColgp_Array2OfPnt poles(1, 70, 1, 70);
-  for (int i = 1; i <= 70; ++i)
-    for (int j = 1; j <= 70; ++j) poles(i, j) = gp_Pnt(i, j, std::sin(i * 0.3) * std::cos(j * 0.2));
-  TColStd_Array1OfReal knots(1, 68);
-  TColStd_Array1OfInteger mults(1, 68);
-  for (int i = 1; i <= 68; ++i) knots(i) = i, mults(i) = (i == 1 || i == 68) ? 4 : 1;
+  // 130 × 130 control points: past kNurbsPoints (16 384).
+  TColgp_Array2OfPnt poles(1, 130, 1, 130);
+  for (int i = 1; i <= 130; ++i)
+    for (int j = 1; j <= 130; ++j) poles(i, j) = gp_Pnt(i, j, std::sin(i * 0.3) * std::cos(j * 0.2));
+  TColStd_Array1OfReal knots(1, 128);
+  TColStd_Array1OfInteger mults(1, 128);
+  for (int i = 1; i <= 128; ++i) knots(i) = i, mults(i) = (i == 1 || i == 128) ? 4 : 1;
   Handle(Geom_BSplineSurface) dense = new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
   TopoDS_Compound one;
   b.MakeCompound(one);
-  b.Add(one, face(dense, 1, 68, 1, 68));
+  b.Add(one, face(dense, 1, 128, 1, 128));
   const std::string densePath = (dir / "pdesurf-import-dense.step").string();
   writeStep(one, densePath);
-  expectRefusal("70 × 70 control points", densePath, pdesurf::ErrorCode::TooLarge, "70 × 70 control points");
+  expectRefusal("130 × 130 control points", densePath, pdesurf::ErrorCode::TooLarge, "130 × 130 control points");
 
   // A pole written as NaN in the file's text.
   const std::string nanPath = (dir / "pdesurf-import-nan.step").string();

@@ -48,18 +48,20 @@ export function createFilesFeature({ panel, viewer, state, status, hooks, solver
     status.error(msg);
   }
 
-  // A CAD file's faces as a scene (docs/cad-import.md): .3dm through rhino3dm in its worker;
-  // STEP and IGES through `pdesurf import` for now (the page has no Open CASCADE yet).
+  // A CAD file's faces as a scene (docs/cad-import.md): .3dm through rhino3dm, STEP through
+  // Open CASCADE, each in a worker of its own started on first use; IGES through `pdesurf
+  // import` (the page's Open CASCADE build reads no IGES).
   async function readCadFile(file, name) {
     const ext = name.toLowerCase().split('.').pop();
-    if (['step', 'stp', 'igs', 'iges'].includes(ext)) {
-      throw new Error(`the page does not read ${ext.toUpperCase()} files yet: \`pdesurf import ${name} -o scene.json\` writes its faces as a scene, which opens here`);
+    if (ext === 'igs' || ext === 'iges') {
+      throw new Error(`the page does not read IGES files: \`pdesurf import ${name} -o scene.json\` writes its faces as a scene, which opens here`);
     }
-    const { MAX_CAD_FILE_BYTES } = await import('../cad/read-3dm.js');
-    if (file.size > MAX_CAD_FILE_BYTES) throw new Error(`the file has ${file.size} bytes: at most ${MAX_CAD_FILE_BYTES >> 20} MB are imported`);
-    status.info(`reading ${name} (rhino3dm loads on first use)…`);
-    const { import3dm } = await import('../cad/export-3dm.js');
-    const scene = await import3dm(await file.arrayBuffer(), name);
+    const { checkFileSize } = await import('../cad/cad-scene.js');
+    checkFileSize(file.size);
+    const step = ext === 'step' || ext === 'stp';
+    status.info(`reading ${name} (${step ? 'Open CASCADE, 23 MB,' : 'rhino3dm'} loads on first use)…`);
+    const scene = step ? await (await import('../cad/import-step.js')).importStep(await file.arrayBuffer(), name)
+      : await (await import('../cad/export-3dm.js')).import3dm(await file.arrayBuffer(), name);
     return { scene, title: null }; // the file name is the title
   }
 
