@@ -101,3 +101,63 @@ test('bad .3dm files are named errors before the work', { skip }, async () => {
   const empty = new rh.File3dm();
   await refusal(empty.toByteArray(), 'InvalidField', /no surfaces/);
 });
+
+// A random generator of its own (mulberry32): the same surfaces every run.
+function random(seed) {
+  return () => {
+    seed = (seed + 0x6d2b79f5) | 0;
+    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+test('random NURBS surfaces written by rhino3dm (degrees 1-5, rational or not, clamped or not) come back as rhino3dm evaluates them', { skip }, async () => {
+  const rh = await loadRhino3dm();
+  const solver = await solverPromise;
+  const rnd = random(40);
+  let worst = 0, surfaces = 0;
+  for (let trial = 0; trial < 24; trial++) {
+    const p = 1 + Math.floor(rnd() * 5), q = 1 + Math.floor(rnd() * 5);
+    const nu = p + 1 + Math.floor(rnd() * 5), nv = q + 1 + Math.floor(rnd() * 5);
+    const rational = trial % 2 === 1;
+    const s = rh.NurbsSurface.create(3, rational, p + 1, q + 1, nu, nv);
+    // Knots: openNURBS's n + p - 1, non-decreasing; clamped ends (p equal knots) or not.
+    for (const [list, deg, n] of [[s.knotsU(), p, nu], [s.knotsV(), q, nv]]) {
+      const clamped = rnd() < 0.6;
+      let k = 0;
+      for (let i = 0; i < n + deg - 1; i++) {
+        if (i > 0) k += clamped && (i < deg || i >= n) ? 0 : 0.2 + rnd();
+        list.set(i, k);
+      }
+    }
+    for (let i = 0; i < nu; i++) {
+      for (let j = 0; j < nv; j++) {
+        const w = rational ? 0.5 + 1.5 * rnd() : 1;
+        const x = [i + 0.3 * rnd(), j + 0.3 * rnd(), 0.5 * rnd()];
+        s.points().set(i, j, [x[0] * w, x[1] * w, x[2] * w, w]);
+      }
+    }
+    if (!s.isValid) continue;
+    const file = new rh.File3dm();
+    file.objects().add(s, new rh.ObjectAttributes());
+    const scene = await read3dm(file.toByteArray(), { fileName: 'random.3dm' });
+    const [patch] = scene.patches;
+    const [solved] = solver.solve(JSON.stringify(scene), grid).patches;
+    const [t0, t1] = patch.t_range, [v0, v1] = patch.v_range;
+    let size = 0, gap = 0;
+    for (let j = 0; j <= grid.nv; j++) {
+      for (let i = 0; i <= grid.nu; i++) {
+        const t = t0 + ((t1 - t0) * i) / grid.nu, v = v0 + ((v1 - v0) * j) / grid.nv;
+        const want = s.pointAt(t, v), k = 3 * (j * (grid.nu + 1) + i);
+        size = Math.max(size, Math.hypot(...want));
+        gap = Math.max(gap, Math.hypot(solved.positions[k] - want[0], solved.positions[k + 1] - want[1], solved.positions[k + 2] - want[2]));
+      }
+    }
+    assert.ok(gap <= 2e-7 * size, `trial ${trial} (degree ${p} × ${q}, ${rational ? 'rational' : 'polynomial'}): ${gap} from rhino3dm's pointAt`); // float32 positions
+    worst = Math.max(worst, gap / size);
+    surfaces++;
+  }
+  assert.ok(surfaces >= 20, `${surfaces} valid surfaces`);
+  console.log(`${surfaces} random rhino3dm surfaces: worst ${worst.toExponential(2)} of the size from its own evaluation (float32 positions)`);
+});

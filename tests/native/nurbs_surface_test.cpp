@@ -344,3 +344,76 @@ TEST_CASE("nurbs: bad NURBS data is refused by name") {
   old["version"] = 3;
   CHECK(parseErrorOf(old.dump()).find("needs scene version 4") != std::string::npos);
 }
+
+namespace {
+
+// The typed strip `s` (a polynomial of degree <= 2 in t and in v) as a Bézier surface of degree
+// 2 × 2: its Bernstein coefficients from its values at three points a direction (exact).
+json asNurbs(const SeparableSurface& s) {
+  const double B[3][3] = {{1, 0, 0}, {0.25, 0.5, 0.25}, {0, 0, 1}};  // B_j(x_i) at x = 0, 1/2, 1
+  Eigen::Matrix3d M;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) M(i, j) = B[i][j];
+  const Eigen::Matrix3d Minv = M.inverse();
+  json points = json::array();
+  std::array<Eigen::Matrix3d, 3> values;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d p = evalPoint(s, s.u0 + (s.u1 - s.u0) * i / 2.0, s.v0 + (s.v1 - s.v0) * j / 2.0);
+      for (int c = 0; c < 3; ++c) values[size_t(c)](i, j) = p[c];
+    }
+  std::array<Eigen::Matrix3d, 3> coef;
+  for (int c = 0; c < 3; ++c) coef[size_t(c)] = Minv * values[size_t(c)] * Minv.transpose();
+  for (int i = 0; i < 3; ++i) {
+    json row = json::array();
+    for (int j = 0; j < 3; ++j) row.push_back({coef[0](i, j), coef[1](i, j), coef[2](i, j)});
+    points.push_back(row);
+  }
+  return {{"degree", {2, 2}}, {"knots", {{s.u0, s.u0, s.u0, s.u1, s.u1, s.u1}, {s.v0, s.v0, s.v0, s.v1, s.v1, s.v1}}}, {"points", points}};
+}
+
+}  // namespace
+
+TEST_CASE("nurbs: a Bézier fill with its borders by reference to NURBS strips is the fill to the typed strips, certified") {
+  const json typed = json::parse(readText(examplePath("fill-four-strips.json")));
+  const Scene original = parseScene(typed.dump());
+  const auto solvedTyped = solveScene(original);
+  json rebuilt = typed;
+  int replaced = 0;
+  for (json& p : rebuilt["patches"]) {
+    if (p["kind"] != "surface") continue;
+    const SeparableSurface& s = solvedNamed(solvedTyped, p["name"].get<std::string>()).surface;
+    json n = {{"name", p["name"]}, {"kind", "surface"}, {"nurbs", asNurbs(s)}};
+    p = n;
+    ++replaced;
+  }
+  CHECK(replaced == 8);
+  const Scene scene = parseScene(rebuilt.dump());
+  const auto solved = solveScene(scene);
+  // The strips are the same surfaces (a polynomial of degree 2 in Bernstein form).
+  double worstStrip = 0.0;
+  for (const SolvedPatch& sp : solved) {
+    if (sp.patch->kind != PatchKind::Primary) continue;
+    const SeparableSurface& a = solvedNamed(solvedTyped, sp.patch->name).surface;
+    for (int k = 0; k <= 10; ++k)
+      worstStrip = std::max(worstStrip, (evalPoint(a, a.u0 + (a.u1 - a.u0) * k / 10, a.v0 + (a.v1 - a.v0) * (10 - k) / 10) -
+                                         evalPoint(sp.surface, a.u0 + (a.u1 - a.u0) * k / 10, a.v0 + (a.v1 - a.v0) * (10 - k) / 10)).norm());
+  }
+  CHECK(worstStrip < 1e-13);
+  // The fill solved against the NURBS strips' borders is the fill solved against the typed ones.
+  const SeparableSurface& f0 = solvedNamed(solvedTyped, "fill").surface;
+  const SeparableSurface& f1 = solvedNamed(solved, "fill").surface;
+  double worstFill = 0.0;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) worstFill = std::max(worstFill, (evalPoint(f0, i / 8.0, j / 8.0) - evalPoint(f1, i / 8.0, j / 8.0)).norm());
+  CHECK(worstFill < 1e-9);
+  const SceneReport r = checkScene(scene, solved, 0);
+  CHECK(r.joins.size() >= 4);
+  for (const JoinResult& j : r.joins) {
+    CAPTURE(j.surface);
+    CAPTURE(j.g0);
+    CAPTURE(j.g1Deg);
+    CHECK(j.ok);
+  }
+  MESSAGE("strips " << worstStrip << " apart, the fill " << worstFill << "; " << r.joins.size() << " joins certified");
+}
