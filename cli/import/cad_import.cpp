@@ -220,7 +220,9 @@ json importCadFile(const std::string& path) {
     fail(ErrorCode::TooLarge, file, std::to_string(bytes >> 20) + " MB: at most " + std::to_string(kMaxFileBytes >> 20) + " MB are imported");
   const std::string ext = lower(path.substr(path.find_last_of('.') + 1));
   const bool step = ext == "step" || ext == "stp", iges = ext == "igs" || ext == "iges";
-  if (!step && !iges) fail(ErrorCode::InvalidField, file, "unknown extension ." + ext + " (want .step, .stp, .igs or .iges)");
+  if (ext == "3dm")  // no openNURBS natively: the page's reader, under node
+    fail(ErrorCode::InvalidField, file, "a .3dm file is read by rhino3dm: node scripts/import-3dm.mjs " + title + " -o scene.json");
+  if (!step && !iges) fail(ErrorCode::InvalidField, file, "unknown extension ." + ext + " (want .step, .stp, .igs or .iges; .3dm: node scripts/import-3dm.mjs)");
 
   // OCCT reports to its own messenger (stdout); the CLI's output is the scene.
   Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_Printer));

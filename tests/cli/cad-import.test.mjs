@@ -85,6 +85,7 @@ test('import: bad files are named errors and write nothing', { skip: sanitized }
   const cases = [
     [join(dir, 'missing.step'), /cannot be read/],
     [(() => { const p = join(dir, 'part.obj'); writeFileSync(p, 'v 0 0 0\n'); return p; })(), /unknown extension \.obj/],
+    [(() => { const p = join(dir, 'part.3dm'); writeFileSync(p, 'x'); return p; })(), /a \.3dm file is read by rhino3dm: node scripts\/import-3dm\.mjs part\.3dm -o scene\.json/],
     [(() => { const p = join(dir, 'junk.stp'); writeFileSync(p, 'not a STEP file\n'); return p; })(), /ParseError: the file: Open CASCADE could not read it as STEP/],
     [(() => { const p = join(dir, 'junk.iges'); writeFileSync(p, '\0\0\0garbage'); return p; })(), /could not read it as IGES|holds no shape|has no faces/],
   ];

@@ -161,3 +161,24 @@ test('random NURBS surfaces written by rhino3dm (degrees 1-5, rational or not, c
   assert.ok(surfaces >= 20, `${surfaces} valid surfaces`);
   console.log(`${surfaces} random rhino3dm surfaces: worst ${worst.toExponential(2)} of the size from its own evaluation (float32 positions)`);
 });
+
+test('node scripts/import-3dm.mjs writes the scene the page reads; a bad file is a named error that writes nothing', { skip }, async () => {
+  const { spawnSync } = await import('node:child_process');
+  const os = await import('node:os');
+  const solver = await solverPromise;
+  const scene = example('cad-part');
+  const fit = solver.exportCad(JSON.stringify(scene), { format: '3dm' });
+  const bytes = await write3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title, breps: fit.breps, archive: fit.archive });
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'pdesurf-3dm-'));
+  const file = path.join(dir, 'part.3dm'), out = path.join(dir, 'part.json');
+  fs.writeFileSync(file, bytes);
+  const r = spawnSync(process.execPath, [path.join(REPO, 'scripts', 'import-3dm.mjs'), file, '-o', out], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  assert.deepEqual(JSON.parse(fs.readFileSync(out, 'utf8')), await read3dm(bytes, { fileName: 'part.3dm' }));
+  const junk = path.join(dir, 'junk.3dm'), nothing = path.join(dir, 'nothing.json');
+  fs.writeFileSync(junk, Buffer.alloc(100));
+  const bad = spawnSync(process.execPath, [path.join(REPO, 'scripts', 'import-3dm.mjs'), junk, '-o', nothing], { encoding: 'utf8' });
+  assert.equal(bad.status, 1);
+  assert.match(bad.stderr, /^import-3dm: .*junk\.3dm: ParseError: rhino3dm could not read it as a \.3dm file/);
+  assert.ok(!fs.existsSync(nothing));
+});
