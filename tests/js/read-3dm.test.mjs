@@ -14,6 +14,7 @@ import { loadTestSolver, wasmDir } from './test-solver.mjs';
 import { write3dm } from '../../web/cad/write-3dm.js';
 import { read3dm, CadFileError } from '../../web/cad/read-3dm.js';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
+import { random } from './random.mjs';
 
 const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const skip = fs.existsSync(new URL('pdesurf.wasm', wasmDir)) ? false : `no wasm build in ${wasmDir}`;
@@ -101,16 +102,6 @@ test('bad .3dm files are named errors before the work', { skip }, async () => {
   const empty = new rh.File3dm();
   await refusal(empty.toByteArray(), 'InvalidField', /no surfaces/);
 });
-
-// A random generator of its own (mulberry32): the same surfaces every run.
-function random(seed) {
-  return () => {
-    seed = (seed + 0x6d2b79f5) | 0;
-    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 test('random NURBS surfaces written by rhino3dm (degrees 1-5, rational or not, clamped or not) come back as rhino3dm evaluates them', { skip }, async () => {
   const rh = await loadRhino3dm();

@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { loadSolver } from '../../web/solver/pdesurf-solver.js';
 import { write3dm } from '../../web/cad/write-3dm.js';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
+import { random } from './random.mjs';
 import { evaluate } from './de-boor.mjs';
 
 const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -35,16 +36,6 @@ async function exported(solver, rh, sceneText) {
     bodies.push({ name: o.attributes().name, userFaces: o.attributes().getUserString('pdesurf.faces'), brep: o.geometry() });
   }
   return { fit, bodies, file };
-}
-
-// A random generator of its own (mulberry32): the same points every run.
-function random(seed) {
-  return () => {
-    seed = (seed + 0x6d2b79f5) | 0;
-    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 describe('.3dm bodies read back by rhino3dm', { skip }, () => {

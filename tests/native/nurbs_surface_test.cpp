@@ -3,7 +3,7 @@
 // independent rational evaluation with their first and second partials; blends by reference
 // to random NURBS surfaces (open and closed in v, polynomial and rational) certified; bad
 // NURBS data refused by name.
-#include <doctest/doctest.h>
+#include <doctest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
