@@ -141,7 +141,11 @@ Eigen::Vector3d reference(const RandomNurbs& s, double t, double v, int a, int b
 
 json surfacePatch(const std::string& name, const json& nurbs) { return {{"name", name}, {"kind", "surface"}, {"nurbs", nurbs}}; }
 
-json sceneOf(json patches) { return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", std::move(patches)}}; }
+// A vector, not a json: a braced list of one object is that object to some compilers (clang
+// in the wasm build), an array of it to others.
+json sceneOf(const std::vector<json>& patches) {
+  return {{"format", "pdesurf-scene"}, {"version", 4}, {"patches", json(patches)}};
+}
 
 }  // namespace
 
@@ -264,7 +268,10 @@ TEST_CASE("nurbs: blends by reference to random NURBS surfaces keep the continui
   const char* levels[3] = {"position", "tangency", "curvature"};
   int joins = 0;
   double worstG0 = 0, worstG1 = 0, worstG2 = 0, worstSize = 0;
-  for (int trial = 0; trial < 36; ++trial) {
+  // Each blend is a refined modal solve and a certificate (~0.3 s natively): a third of them
+  // under AddressSanitizer and in wasm (the suite's budget), the same seeds.
+  const int trials = kSlowLongDouble ? 12 : 36;
+  for (int trial = 0; trial < trials; ++trial) {
     CAPTURE(trial);
     // Both sheets over the same v: the blend's v is theirs, so their v-knots span one domain.
     RandomNurbs lower = randomNurbs(rng, -1.0, 0.0, trial % 2 == 0, true, true);
