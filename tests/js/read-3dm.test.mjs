@@ -14,7 +14,7 @@ import { loadTestSolver, wasmDir } from './test-solver.mjs';
 import { write3dm } from '../../web/cad/write-3dm.js';
 import { read3dm, CadFileError } from '../../web/cad/read-3dm.js';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
-import { random } from './random.mjs';
+import { random } from './bspline-samples.mjs';
 
 const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const skip = fs.existsSync(new URL('pdesurf.wasm', wasmDir)) ? false : `no wasm build in ${wasmDir}`;

@@ -13,7 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { loadSolver } from '../../web/solver/pdesurf-solver.js';
 import { write3dm } from '../../web/cad/write-3dm.js';
 import { loadRhino3dm } from '../../web/cad/load-rhino3dm.js';
-import { random } from './random.mjs';
+import { random } from './bspline-samples.mjs';
 import { evaluate } from './de-boor.mjs';
 
 const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');

@@ -4,7 +4,7 @@
 // when the face closes in u only (pdesurf's v runs around; docs/cad-import.md).
 export const MAX_CAD_FILE_BYTES = 64 << 20; // as the CLI's import (cli/import/cad_import.hpp)
 export const MAX_PATCHES = 64; // a scene's patches (docs/limits.md)
-export const MAX_POINTS = 16384; // a NURBS surface's control points (cpp/common/limits.hpp kNurbsPoints)
+const MAX_POINTS = 16384; // a NURBS surface's control points (cpp/common/limits.hpp kNurbsPoints)
 const MAX_DEGREE = 25; // kNurbsDegree
 const NAME_CHARS = 64;
 
@@ -39,11 +39,11 @@ export function uniqueName(want, index, taken) {
 
 /** Whether a surface (value(u, v) -> [x, y, z]) closes in u (dir 0) or v over the box `domain`. */
 export function closesIn(value, dir, [[u0, u1], [v0, v1]]) {
+  const mid = value(0.5 * (u0 + u1), 0.5 * (v0 + v1));
   let size = 0, gap = 0;
   for (let k = 0; k <= 8; k++) {
     const a = dir === 0 ? value(u0, v0 + ((v1 - v0) * k) / 8) : value(u0 + ((u1 - u0) * k) / 8, v0);
     const b = dir === 0 ? value(u1, v0 + ((v1 - v0) * k) / 8) : value(u0 + ((u1 - u0) * k) / 8, v1);
-    const mid = value(0.5 * (u0 + u1), 0.5 * (v0 + v1));
     size = Math.max(size, Math.hypot(...a), Math.hypot(a[0] - mid[0], a[1] - mid[1], a[2] - mid[2]));
     gap = Math.max(gap, Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]));
   }
@@ -60,10 +60,14 @@ const transpose = (m) => m[0].map((_, j) => m.map((r) => r[j]));
  * same shape or null, full knot vectors, ranges `domain` [[u0, u1], [v0, v1]]; swapped when
  * `swap`. Throws CadFileError (naming `who`) past the limits or for a non-finite number.
  */
-export function nurbsPatch(name, who, { degree: [p, q], knots: [ku, kv], rows, weights, domain, swap }) {
-  const nu = rows.length, nv = rows[0]?.length ?? 0;
+/** The counts and degrees of a face, checked before its control points are read. */
+export function checkFaceSize(who, nu, nv, p, q) {
   if (nu * nv > MAX_POINTS) throw new CadFileError('TooLarge', `${who}: ${nu} × ${nv} control points: a surface has at most ${MAX_POINTS}`);
   if (p > MAX_DEGREE || q > MAX_DEGREE) throw new CadFileError('TooLarge', `${who}: degree ${Math.max(p, q)}: at most ${MAX_DEGREE}`);
+}
+
+export function nurbsPatch(name, who, { degree: [p, q], knots: [ku, kv], rows, weights, domain, swap }) {
+  checkFaceSize(who, rows.length, rows[0]?.length ?? 0, p, q);
   rows.forEach((row, i) => row.forEach((x, j) => {
     if (![...x, weights ? weights[i][j] : 1].every(Number.isFinite)) throw new CadFileError('NonFinite', `${who}: control point (${i + 1}, ${j + 1}) is not finite`);
   }));

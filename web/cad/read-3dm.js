@@ -6,7 +6,7 @@
 // in the page, web/cad/rhino-worker.js). Bounded before the work: the file's size, the faces
 // (counted before any is converted), each face's control points and degree.
 import { loadRhino3dm } from './load-rhino3dm.js';
-import { CadFileError, MAX_PATCHES, checkFileSize, cadScene, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
+import { CadFileError, MAX_PATCHES, checkFaceSize, checkFileSize, cadScene, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
 
 export { CadFileError };
 export { MAX_CAD_FILE_BYTES } from './cad-scene.js';
@@ -38,6 +38,7 @@ function patchOf(face, name, who) {
   if (!nurbs) throw new CadFileError('InvalidField', `${who}: rhino3dm could not give its surface as NURBS`);
   const points = nurbs.points();
   const nu = points.countU, nv = points.countV;
+  checkFaceSize(who, nu, nv, nurbs.degree(0), nurbs.degree(1)); // before the points are read
   const rows = [], weights = [];
   for (let i = 0; i < nu; i++) {
     const row = [], wrow = [];

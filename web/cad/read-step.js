@@ -7,7 +7,7 @@
 // web/cad/occt-worker.js. Bounded before the work: the file's size, the faces (counted
 // before any is converted), each face's control points and degree.
 import { loadOcct } from './load-occt.js';
-import { CadFileError, MAX_POINTS, checkFaceCount, checkFileSize, cadScene, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
+import { CadFileError, checkFaceCount, checkFaceSize, checkFileSize, cadScene, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
 
 // Shortest text that reads back to x.
 const num = (x) => (Object.is(x, -0) ? '0' : String(x));
@@ -76,7 +76,7 @@ function bsplinePatch(bs, name, who, [[u0, u1], [v0, v1]], swap) {
   if (bs.IsUPeriodic()) bs.SetUNotPeriodic();
   if (bs.IsVPeriodic()) bs.SetVNotPeriodic();
   const nu = bs.NbUPoles(), nv = bs.NbVPoles();
-  if (nu * nv > MAX_POINTS) throw new CadFileError('TooLarge', `${who}: ${nu} × ${nv} control points: a surface has at most ${MAX_POINTS}`);  // before they are read
+  checkFaceSize(who, nu, nv, bs.UDegree(), bs.VDegree()); // before the points are read
   const rows = [], weights = [];
   for (let i = 1; i <= nu; i++) {
     const row = [], wrow = [];
