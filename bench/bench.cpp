@@ -92,6 +92,7 @@ double benchMedianSeconds(const std::function<void()>& f) { return medianSeconds
 void benchModels(const std::string& dir);  // bench/models_bench.cpp
 void benchFills(const std::string& dir, const char* file);
 void benchCad(const std::string& dir);     // bench/cad_bench.cpp
+void benchNurbs(const std::string& dir);   // bench/nurbs_bench.cpp
 }  // namespace pdesurf
 
 int main(int argc, char** argv) {
@@ -103,6 +104,11 @@ int main(int argc, char** argv) {
         for (const SolvedPatch& sp : solveScene(parseScene(readText(std::string(PDESURF_EXAMPLES_DIR) + "/" + f))))
           sink = tessellate(sp.surface, 64, 64).vertexCount();
     for (const char* f : {"you2004-fig8c.json", "you2004-fig8d.json"}) benchFills(PDESURF_EXAMPLES_DIR, f);
+    return 0;
+  }
+  // `pdesurf_bench nurbs`: only the NURBS drawing section.
+  if (argc > 1 && std::string(argv[1]) == "nurbs") {
+    benchNurbs(PDESURF_EXAMPLES_DIR);
     return 0;
   }
 #ifdef __EMSCRIPTEN__
@@ -277,5 +283,6 @@ int main(int argc, char** argv) {
   }
   benchModels(dir);
   benchCad(dir);
+  benchNurbs(dir);
   return 0;
 }

@@ -47,13 +47,25 @@ void ExprProgram::compile(const std::vector<const ExprNode*>& roots) {
     if (n->b) ++readers[index[n->b.get()]];
   }
   for (const ExprNode* r : roots) readers[index[r]] += 1u << 30;
+  // Basis groups: (argument node, degree, knots); the first member in program order computes.
+  std::vector<std::pair<const ExprNode*, const SplineFn*>> groupKey;
   std::vector<uint32_t> reg(order.size());
   std::vector<uint32_t> freeRegs;
   code_.reserve(order.size());
   for (size_t k = 0; k < order.size(); ++k) {
     const ExprNode& n = *order[k];
-    Instruction ins{n.op, n.fn, n.var, false, n.value, n.spline.get(), 0, 0, 0};
-    if (n.spline) splines_.push_back(n.spline);
+    Instruction ins{n.op, n.fn, n.var, false, n.value, n.spline.get(), 0, 0, 0, -1, false};
+    if (n.spline) {
+      splines_.push_back(n.spline);
+      for (size_t g = 0; g < groupKey.size() && ins.group < 0; ++g)
+        if (groupKey[g].first == n.a.get() && groupKey[g].second->sameBasis(*n.spline)) ins.group = int(g);
+      if (ins.group < 0) {
+        ins.group = int(groups_.size()), ins.computesBasis = true;
+        groupKey.push_back({n.a.get(), n.spline.get()});
+        groups_.push_back({n.spline->degree(), basisUnits_});
+        basisUnits_ += size_t(n.spline->degree()) + 2;
+      }
+    }
     if (n.a) ins.a = reg[index[n.a.get()]];
     if (n.b) ins.b = reg[index[n.b.get()]];
     if (n.op == Op::Pow && n.b->op == Op::Const && (n.b->value == 2 || n.b->value == 3)) ins.smallPower = true, ins.value = n.b->value;
@@ -113,8 +125,9 @@ void ExprProgram::runAll(const double* v, const double* u, size_t n, double* con
   const size_t block = std::max<size_t>(1, std::min({n, size_t{256}, (size_t{1} << 20) / std::max<uint32_t>(1, registers_)}));
   // Every register is written before it is read: the scratch is kept per thread and reused
   // as it is (clearing and allocating it on each call cost as much as a wide program's run).
-  thread_local std::vector<double> scratch;
+  thread_local std::vector<double> scratch, bases;
   if (scratch.size() < static_cast<size_t>(registers_) * block) scratch.resize(static_cast<size_t>(registers_) * block);
+  if (bases.size() < basisUnits_ * block) bases.resize(basisUnits_ * block);
   for (size_t start = 0; start < n; start += block) {
     const size_t m = std::min(block, n - start);
     for (const Instruction& ins : code_) {
@@ -140,7 +153,26 @@ void ExprProgram::runAll(const double* v, const double* u, size_t n, double* con
           else map2(o, a, b, m, [](double x, double y) { return std::pow(x, y); });
           break;
         case Op::Call: callFn(ins.fn, o, a, m); break;
-        case Op::Spline: map1(o, a, m, [f = ins.spline](double x) { return f->eval(x); }); break;
+        case Op::Spline: {
+          const SplineGroup& g = groups_[size_t(ins.group)];
+          const size_t stride = size_t(g.degree) + 1;
+          double* spans = bases.data() + g.basisOffset * block;  // the pieces, as doubles
+          double* N = spans + block;                               // stride values per point
+          if (ins.computesBasis)
+            for (size_t k = 0; k < m; ++k) {
+              if (k && a[k] == a[k - 1]) {  // a grid line along the other variable: the same basis
+                spans[k] = spans[k - 1];
+                std::copy(N + (k - 1) * stride, N + k * stride, N + k * stride);
+                continue;
+              }
+              const int piece = ins.spline->span(a[k]);
+              spans[k] = piece;
+              ins.spline->basis(piece, a[k], N + k * stride);
+            }
+          for (size_t k = 0; k < m; ++k)
+            o[k] = k && a[k] == a[k - 1] ? o[k - 1] : std::isnan(a[k]) ? a[k] : ins.spline->combine(int(spans[k]), N + k * stride);
+          break;
+        }
       }
     }
     for (size_t r = 0; r < rootRegister_.size(); ++r) {

@@ -34,10 +34,22 @@ class ExprProgram {
     double value;     // Const; the exponent of a small power
     const SplineFn* spline;  // Spline: its function (kept alive by splines_)
     uint32_t out, a, b;
+    int group;           // Spline: its basis group (below)
+    bool computesBasis;  // Spline: the group's first member, which computes the basis
+  };
+  // Spline instructions on one knot vector and degree reading one argument share the piece
+  // and the p + 1 non-zero basis functions at each point: a NURBS surface is tens of basis
+  // and coefficient splines on two knot vectors, so the basis is computed once per point for
+  // all of them, and each adds only its p + 1 products (SplineFn::basis / combine).
+  struct SplineGroup {
+    int degree;
+    size_t basisOffset;  // in units of the block: the group's spans, then (p + 1) basis rows
   };
   void compile(const std::vector<const ExprNode*>& roots);
   std::vector<Instruction> code_;
   std::vector<std::shared_ptr<const SplineFn>> splines_;  // the Spline instructions' functions, kept alive
+  std::vector<SplineGroup> groups_;
+  size_t basisUnits_ = 0;  // Σ over groups of p + 2 (one row of spans, p + 1 of basis values)
   std::vector<uint32_t> rootRegister_;
   uint32_t registers_ = 0;
 };

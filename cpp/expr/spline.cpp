@@ -7,6 +7,7 @@ namespace pdesurf {
 
 std::string SplineFn::problem(int p, const std::vector<double>& t, const std::vector<double>& c) {
   if (p < 0) return "the degree is negative";
+  if (p >= kMaxBasis) return "the degree is above " + std::to_string(kMaxBasis - 1);
   if (c.size() < size_t(p) + 1) return "degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) + " coefficients";
   if (t.size() != c.size() + size_t(p) + 1)
     return std::to_string(c.size()) + " coefficients of degree " + std::to_string(p) + " need " + std::to_string(c.size() + size_t(p) + 1) +
@@ -31,6 +32,10 @@ std::string SplineFn::problem(int p, const std::vector<double>& t, const std::ve
 }
 
 SplineFn::SplineFn(int degree, std::vector<double> knots, std::vector<double> coefs) : p_(degree), t_(std::move(knots)), c_(std::move(coefs)) {
+  for (int i = 0; i < int(c_.size()); ++i)
+    if (c_[size_t(i)] != 0.0) nonzeroLast_ = i;
+  for (int i = int(c_.size()) - 1; i >= 0; --i)
+    if (c_[size_t(i)] != 0.0) nonzeroFirst_ = i;
   if (p_ == 0) return;
   // d/dx Σ c_i N_{i,p} = Σ p (c_{i+1} - c_i) / (t_{i+p+1} - t_{i+1}) N_{i+1,p-1}, on the knots without their ends.
   std::vector<double> d(c_.size() - 1);
@@ -57,22 +62,38 @@ int SplineFn::span(double x) const {
   return int(it - t_.begin()) - 1;
 }
 
+void SplineFn::basis(int k, double x, double* N) const {
+  // The triangular recursion for the non-zero B-splines on piece k (Piegl & Tiller, A2.2):
+  // every denominator spans [t_k, t_{k+1}], a non-empty piece; inside it, sums of positive terms.
+  double left[kMaxBasis], right[kMaxBasis];
+  N[0] = 1.0;
+  for (int j = 1; j <= p_; ++j) {
+    left[j] = x - t_[size_t(k + 1 - j)];
+    right[j] = t_[size_t(k + j)] - x;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      const double temp = N[r] / (right[r + 1] + left[j - r]);
+      N[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    N[j] = saved;
+  }
+}
+
+double SplineFn::combine(int k, const double* N) const {
+  if (k - p_ > nonzeroLast_ || k < nonzeroFirst_) return 0.0;
+  const double* c = c_.data() + (k - p_);
+  double sum = 0.0;
+  for (int j = 0; j <= p_; ++j) sum += c[j] * N[j];
+  return sum;
+}
+
 double SplineFn::eval(double x) const {
   if (std::isnan(x)) return x;
   const int k = span(x);
-  double d[32];
-  std::vector<double> big;
-  double* a = d;
-  if (p_ + 1 > 32) big.resize(size_t(p_) + 1), a = big.data();
-  for (int j = 0; j <= p_; ++j) a[j] = c_[size_t(k - p_ + j)];
-  // de Boor: every denominator spans [t_k, t_{k+1}], a non-empty piece.
-  for (int r = 1; r <= p_; ++r)
-    for (int j = p_; j >= r; --j) {
-      const size_t i = size_t(k - p_ + j);
-      const double alpha = (x - t_[i]) / (t_[i + size_t(p_ - r) + 1] - t_[i]);
-      a[j] = (1.0 - alpha) * a[j - 1] + alpha * a[j];
-    }
-  return a[p_];
+  double N[kMaxBasis];
+  basis(k, x, N);
+  return combine(k, N);
 }
 
 double SplineFn::derivativeAt(double x, int k) const {

@@ -13,8 +13,10 @@ namespace pdesurf {
 
 class SplineFn {
  public:
+  // Degrees up to kMaxBasis - 1 (the scene's limit, limits::kNurbsDegree, is below it).
+  static constexpr int kMaxBasis = 32;
   // Why (degree, knots, coefs) is not a B-spline function, or "" when it is one: n >= p + 1
-  // coefficients, n + p + 1 finite non-decreasing knots, a non-empty domain, no interior knot
+  // coefficients, 0 <= p < kMaxBasis, n + p + 1 finite non-decreasing knots, a non-empty domain, no interior knot
   // repeated more than p times (the function is continuous), finite coefficients.
   static std::string problem(int degree, const std::vector<double>& knots, const std::vector<double>& coefs);
   // Assumes problem(...) is empty.
@@ -27,6 +29,15 @@ class SplineFn {
   double lo() const { return t_[size_t(p_)]; }
   double hi() const { return t_[c_.size()]; }
   double eval(double x) const;
+  // The same in two steps, so that splines on one knot vector share the first (a NURBS
+  // surface's many basis and coefficient splines; expr/program.cpp): the piece k holding x and
+  // the p + 1 basis functions non-zero there, N[j] = N_{k-p+j,p}(x) (past the domain, the end
+  // piece's polynomials); then Σ_j c_{k-p+j} N[j]. eval(x) is exactly these two.
+  int span(double x) const;  // t_k <= x < t_{k+1}, p <= k < n (clamped to the end pieces)
+  void basis(int k, double x, double* N) const;
+  double combine(int k, const double* N) const;
+  // The same degree and knots: one basis for both.
+  bool sameBasis(const SplineFn& o) const { return p_ == o.p_ && t_ == o.t_; }
   // The derivative as a B-spline of degree p - 1 (built with this one); null for degree 0.
   const std::shared_ptr<const SplineFn>& derivative() const { return derivative_; }
   // The k-th derivative at x (0 past the degree).
@@ -40,9 +51,12 @@ class SplineFn {
   std::vector<double> kinks() const;
 
  private:
-  int span(double x) const;  // k with t_k <= x < t_{k+1}, p <= k < n (clamped to the end pieces)
   int p_;
   std::vector<double> t_, c_;
+  // The coefficients' non-zero index range [nonzeroFirst_, nonzeroLast_] (empty when all are
+  // zero): a piece whose p + 1 coefficients are all zero is 0 without any arithmetic (a unit
+  // basis function is non-zero on p + 1 of its pieces).
+  int nonzeroFirst_ = 0, nonzeroLast_ = -1;
   std::shared_ptr<const SplineFn> derivative_;
 };
 

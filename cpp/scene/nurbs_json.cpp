@@ -9,6 +9,8 @@
 
 namespace pdesurf {
 
+static_assert(limits::kNurbsDegree < SplineFn::kMaxBasis, "a scene's B-spline degree must fit the evaluator's basis");
+
 using namespace scene_json;
 
 namespace {

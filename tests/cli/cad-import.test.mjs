@@ -33,8 +33,7 @@ function report(scenePath) {
 }
 
 // Examples whose blends meet their surfaces by reference (a curve trimline among them).
-// (Not fig8a: the check of its imported 53 × 37 quintic face takes 3.6 s, docs/cad-import.md.)
-const BY_REFERENCE = ['ref-offset-cylinders-g2', 'ref-torus-plane', 'ref-sphere-fillet', 'ref-pipe-tjoint'];
+const BY_REFERENCE = ['ref-offset-cylinders-g2', 'ref-torus-plane', 'ref-sphere-fillet', 'ref-pipe-tjoint', 'you2004-fig8a'];
 
 for (const format of ['step', 'igs']) {
   test(`import: exported ${format.toUpperCase()} comes back as the same surfaces, and blends by reference to them certify`, { skip: sanitized }, () => {
