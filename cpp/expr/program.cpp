@@ -160,11 +160,7 @@ void ExprProgram::runAll(const double* v, const double* u, size_t n, double* con
           double* N = spans + block;                               // stride values per point
           if (ins.computesBasis)
             for (size_t k = 0; k < m; ++k) {
-              if (k && a[k] == a[k - 1]) {  // a grid line along the other variable: the same basis
-                spans[k] = spans[k - 1];
-                std::copy(N + (k - 1) * stride, N + k * stride, N + k * stride);
-                continue;
-              }
+              if (k && a[k] == a[k - 1]) continue;  // a grid line along the other variable: the members copy their last value
               const int piece = ins.spline->span(a[k]);
               spans[k] = piece;
               ins.spline->basis(piece, a[k], N + k * stride);

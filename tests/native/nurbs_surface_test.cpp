@@ -233,6 +233,56 @@ TEST_CASE("nurbs: a surface given as NURBS is the rational surface, with its par
   MESSAGE("worst relative difference of the points and partials: " << worst);
 }
 
+TEST_CASE("nurbs: the compiled partials share their bases along grid lines in either direction and pass NaN through") {
+  // The program computes each knot vector's basis once per point and reuses it while the
+  // argument repeats (a grid line along the other variable): rows of fixed t, rows of fixed v,
+  // scattered points and NaN between them, against the independent rational evaluation.
+  std::mt19937 rng(4041);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    CAPTURE(trial);
+    const RandomNurbs s = randomNurbs(rng, 0.0, 0.0, trial % 2 == 1);
+    const Scene scene = parseScene(sceneOf({surfacePatch("s", s.scene)}).dump());
+    const auto solved = solveScene(scene);
+    const SeparableSurface& S = solved.at(0).surface;
+    std::vector<double> t, v;
+    for (int row = 0; row < 4; ++row) {
+      const double fixed = U(rng);
+      for (int k = 0; k <= 9; ++k) {
+        const double along = k / 9.0;
+        t.push_back(S.u0 + (S.u1 - S.u0) * (row % 2 ? fixed : along));
+        v.push_back(S.v0 + (S.v1 - S.v0) * (row % 2 ? along : fixed));
+      }
+      t.push_back(std::nan("")), v.push_back(std::nan(""));
+      for (int k = 0; k < 5; ++k) t.push_back(S.u0 + (S.u1 - S.u0) * U(rng)), v.push_back(S.v0 + (S.v1 - S.v0) * U(rng));
+    }
+    const size_t n = t.size();
+    std::array<std::vector<std::vector<double>>, 3> out;
+    for (int c = 0; c < 3; ++c) {
+      const auto program = pointwiseProgramOf(S, c);
+      REQUIRE(program);
+      REQUIRE(program->outputs() == 6);
+      out[size_t(c)].assign(6, std::vector<double>(n));
+      double* outs[6];
+      for (int r = 0; r < 6; ++r) outs[r] = out[size_t(c)][size_t(r)].data();
+      program->runAll(v.data(), t.data(), n, outs);
+    }
+    for (size_t i = 0; i < n; ++i)
+      for (int r = 0; r < 6; ++r) {
+        const Eigen::Vector3d got(out[0][size_t(r)][i], out[1][size_t(r)][i], out[2][size_t(r)][i]);
+        if (std::isnan(t[i])) {  // NaN, or 0 where the partial is 0 symbolically (degree 1: no second derivative)
+          if (r == 0) CHECK(got.array().isNaN().all());
+          for (int c = 0; c < 3; ++c) CHECK((std::isnan(got[c]) || got[c] == 0.0));
+          continue;
+        }
+        const Eigen::Vector3d want = reference(s, t[i], v[i], kPartialOrders[r][0], kPartialOrders[r][1]);
+        CAPTURE(i);
+        CAPTURE(r);
+        CHECK((got - want).norm() <= 1e-11 * std::max(1.0, want.norm()));
+      }
+  }
+}
+
 TEST_CASE("nurbs: a rational quadratic circle is a circle, and a cylinder made of two is closed in v") {
   // The standard 9-point rational quadratic circle, v in [0, 1], swept along z (degree 1 in t).
   const double r2 = std::sqrt(0.5);
