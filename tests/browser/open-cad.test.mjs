@@ -14,6 +14,7 @@ import { skip, startHarness, hooks, shoot, solvedAfter, sameChecksum, ROOT } fro
 import { solving } from './build-tools.mjs';
 import { loadSolver } from '../../web/solver/pdesurf-solver.js';
 import { write3dm } from '../../web/cad/write-3dm.js';
+import { OCCT_WASM_BYTES } from '../../web/cad/occt-wasm-size.js';
 
 const APP = process.env.PDESURF_APP_DIR || path.join(ROOT, 'build', 'web');
 const built = fs.existsSync(path.join(APP, 'index.html')) && fs.existsSync(path.join(APP, 'occt-worker.js'));
@@ -59,7 +60,7 @@ describe('opening CAD files', { skip }, () => {
       await pick('part.3dm', bytes);
       const solved = await solvedAfter(page, count);
       assert.equal(solved.lastError, null);
-      assert.deepEqual(await page.evaluate(() => window.__pdesurf.lastFile), { action: 'open', name: 'part.3dm', error: null });
+      assert.deepEqual(await page.evaluate(() => window.__pdesurf.lastFile), { action: 'open', name: 'part.3dm', error: null, download: null });
       assert.match(await page.locator('#scene-title').textContent(), /part\.3dm/);
       if (viewport.width < 600) await page.locator('#toolbar [data-action="panel"]').click();
       for (const name of ['body', 'neck', 'shoulder', 'base', 'cap']) {
@@ -93,14 +94,27 @@ describe('opening CAD files', { skip }, () => {
     });
   }
 
-  it('the production page opens the STEP file through its own copy of Open CASCADE', { skip: built ? false : `no ${APP}/occt-worker.js: run node scripts/build-web.mjs` }, async () => {
+  it('the production page opens the STEP file through its own copy of Open CASCADE, saying how much of it has come', { skip: built ? false : `no ${APP}/occt-worker.js: run node scripts/build-web.mjs` }, async () => {
     const page = await h.open('/app/#example=you2004-fig2a', { viewport: { width: 1280, height: 800 } });
     page.on('pageerror', (e) => errors.push(String(e)));
+    // Every text the status line shows while the file opens.
+    await page.evaluate(() => {
+      const el = document.getElementById('status');
+      window.__statusTexts = [];
+      new MutationObserver(() => window.__statusTexts.push(el.textContent)).observe(el, { childList: true, characterData: true, subtree: true });
+    });
     const count = (await hooks(page)).solveCount;
     await page.locator('[data-file="input"]').setInputFiles({ name: 'part.step', mimeType: 'application/octet-stream', buffer: fs.readFileSync(path.join(ROOT, 'examples', 'cad', 'part.step')) });
     const opened = await solvedAfter(page, count);
     assert.equal(opened.lastError, null);
     assert.equal(await page.locator('#panel [data-nurbs="face 1"]').count(), 1);
+    // The first STEP file fetched Open CASCADE's wasm (sent compressed): all of it, counted.
+    const { download } = await page.evaluate(() => window.__pdesurf.lastFile);
+    assert.deepEqual(download, { loaded: OCCT_WASM_BYTES, total: OCCT_WASM_BYTES });
+    const said = await page.evaluate(() => window.__statusTexts);
+    const progress = said.filter((t) => /^loading Open CASCADE to read part\.step: [\d.]+ MiB of 21\.9 MiB \(\d+ %\)…$/.test(t));
+    assert.ok(progress.length >= 2, `the status line said the download's progress: ${JSON.stringify(said.slice(0, 6))}`);
+    assert.ok(said.includes('reading part.step…'), 'then that it reads the file');
     await page.close();
   });
 

@@ -14,6 +14,7 @@ import { fileURLToPath } from 'node:url';
 import { loadTestSolver, wasmDir } from './test-solver.mjs';
 import { readStep } from '../../web/cad/read-step.js';
 import { OCCT_URL } from '../../web/cad/occt-url.js';
+import { OCCT_WASM_BYTES } from '../../web/cad/occt-wasm-size.js';
 import { CadFileError } from '../../web/cad/cad-scene.js';
 
 const REPO = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
@@ -40,6 +41,11 @@ function exported(id) {
 
 const files = () => [path.join(REPO, 'examples', 'cad', 'part.step'),
   ...['cad-part', 'ref-sphere-fillet', 'ref-torus-plane', 'ref-pipe-tjoint', 'you2004-fig4a', 'you2004-fig8c', 'bottle-solid'].map(exported)];
+
+test("the download's total the page says is the installed Open CASCADE's wasm size", () => {
+  // A new version of replicad-opencascadejs needs web/cad/occt-wasm-size.js updated.
+  assert.equal(fs.statSync(new URL(OCCT_URL.replace(/\.js$/, '.wasm'))).size, OCCT_WASM_BYTES);
+});
 
 test('the page reads STEP files as pdesurf import does', { skip }, async () => {
   const solver = await loadTestSolver();

@@ -6,7 +6,10 @@ import { createWorkerClient } from './worker-client.js';
 
 const request = createWorkerClient(() => new Worker(new URL('./occt-worker.js', import.meta.url), { type: 'module' }), "Open CASCADE's worker");
 
-/** A STEP file's bytes (an ArrayBuffer, handed over) as a scene, off the page's thread. */
-export async function importStep(bytes, fileName) {
-  return (await request({ read: bytes, fileName }, [bytes])).scene;
+/**
+ * A STEP file's bytes (an ArrayBuffer, handed over) as a scene, off the page's thread.
+ * onProgress({ loaded, total }): Open CASCADE's download, the first time (bytes).
+ */
+export async function importStep(bytes, fileName, { onProgress = null } = {}) {
+  return (await request({ read: bytes, fileName }, [bytes], { onProgress })).scene;
 }

@@ -93,11 +93,12 @@ function bsplinePatch(bs, name, who, [[u0, u1], [v0, v1]], swap) {
 
 /**
  * The bytes of a STEP file -> a scene { format, version 4, title, description, patches };
- * throws CadFileError. `fileName` titles it.
+ * throws CadFileError. `fileName` titles it; onLoadProgress(loadedBytes, totalBytes) is told as
+ * Open CASCADE's wasm arrives, on its first load.
  */
-export async function readStep(bytes, { fileName = 'the file', loadOpenCascade = loadOcct } = {}) {
+export async function readStep(bytes, { fileName = 'the file', loadOpenCascade = loadOcct, onLoadProgress = null } = {}) {
   checkFileSize(bytes.byteLength);
-  const oc = await loadOpenCascade();
+  const oc = await loadOpenCascade({ onProgress: onLoadProgress });
   const path = '/import.step';
   oc.FS.writeFile(path, bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes));
   const reader = new oc.STEPControl_Reader();

@@ -1,17 +1,25 @@
 // A worker started on the first request and kept for the next ones (the CAD libraries' workers:
 // rhino-worker.js, occt-worker.js). Requests carry an id; the worker answers { id, error, code }
-// or { id, ...result }. A worker that cannot load (a missing file, a refused script) fails
+// or { id, ...result }, and any number of { id, progress } before it (given to the request's
+// onProgress). A worker that cannot load (a missing file, a refused script) fails
 // every request in flight; the next request starts a new one.
-/** make() -> a new Worker; label names it in errors. Returns request(message, transfer) -> a promise of the answer. */
+/**
+ * make() -> a new Worker; label names it in errors. Returns request(message, transfer,
+ * { onProgress }) -> a promise of the answer.
+ */
 export function createWorkerClient(make, label) {
   let worker = null;
   let nextId = 0;
-  const pending = new Map(); // id -> { resolve, reject }
+  const pending = new Map(); // id -> { resolve, reject, onProgress }
 
   function start() {
     worker = make();
     worker.onmessage = ({ data }) => {
       const p = pending.get(data.id);
+      if (data.progress) {
+        p?.onProgress?.(data.progress);
+        return;
+      }
       pending.delete(data.id);
       if (data.error) p?.reject(Object.assign(new Error(data.error), { code: data.code }));
       else p?.resolve(data);
@@ -25,11 +33,11 @@ export function createWorkerClient(make, label) {
     };
   }
 
-  return function request(message, transfer = []) {
+  return function request(message, transfer = [], { onProgress = null } = {}) {
     if (!worker) start();
     const id = nextId++;
     return new Promise((resolve, reject) => {
-      pending.set(id, { resolve, reject });
+      pending.set(id, { resolve, reject, onProgress });
       worker.postMessage({ ...message, id }, transfer);
     });
   };

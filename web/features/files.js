@@ -60,9 +60,16 @@ export function createFilesFeature({ panel, viewer, state, status, hooks, solver
     checkFileSize(file.size);
     const step = ext === 'step' || ext === 'stp';
     status.info(`reading ${name} (${step ? 'Open CASCADE, 23 MB,' : 'rhino3dm'} loads on first use)…`);
-    const scene = step ? await (await import('../cad/import-step.js')).importStep(await file.arrayBuffer(), name)
+    // Open CASCADE's first download, said as it comes (at most once a percent).
+    let download = null;
+    const onProgress = ({ loaded, total }) => {
+      download = { loaded, total };
+      status.info(loaded < total ? `loading Open CASCADE to read ${name}: ${sizeText(loaded)} of ${sizeText(total)} (${Math.floor((100 * loaded) / total)} %)…`
+        : `reading ${name}…`);
+    };
+    const scene = step ? await (await import('../cad/import-step.js')).importStep(await file.arrayBuffer(), name, { onProgress })
       : await (await import('../cad/export-3dm.js')).import3dm(await file.arrayBuffer(), name);
-    return { scene, title: null }; // the file name is the title
+    return { scene, title: null, download }; // the file name is the title
   }
 
   async function openFile(file) {
@@ -83,7 +90,7 @@ export function createFilesFeature({ panel, viewer, state, status, hooks, solver
     }
     const token = showScene(read.scene, { title: read.title ? `${read.title} (${name})` : name });
     pending = { token, name, previous };
-    hooks.lastFile = { action: 'open', name, error: null };
+    hooks.lastFile = { action: 'open', name, error: null, download: read.download ?? null };
   }
 
   // make() -> { data, name, type, note? (a warning for the status line), record? (more for
