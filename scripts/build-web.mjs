@@ -42,7 +42,8 @@ const OCCT_FILES = ['replicad_single.js', 'replicad_single.wasm'];
 
 // Three bundles: the page, the solver worker it starts (new URL('./solver-worker.js',
 // import.meta.url) resolves beside the page's bundle), and the .3dm writer's worker
-// (web/cad/export-3dm.js starts ./rhino-worker.js the same way). The wasm glue
+// (web/cad/export-3dm.js starts ./rhino-worker.js the same way; the STEP and IGES readers'
+// occt-worker.js and iges-worker.js too). The wasm glue
 // (/wasm/pdesurf.js) is imported at run time and stays a file of its own. The solver worker
 // is one file, sharing no chunk with the page: a cold start's worker then evaluates after one
 // request, not after a second round trip for its chunks.
@@ -51,6 +52,7 @@ const result = await esbuild.build({
     main: path.join(ROOT, 'web', 'main.js'),
     'rhino-worker': path.join(ROOT, 'web', 'cad', 'rhino-worker.js'),
     'occt-worker': path.join(ROOT, 'web', 'cad', 'occt-worker.js'),
+    'iges-worker': path.join(ROOT, 'web', 'cad', 'iges-worker.js'),
   },
   plugins: [rhino3dmUrl],
   outdir: OUT,

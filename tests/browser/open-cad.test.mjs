@@ -2,9 +2,9 @@
 // read-step.js): a .3dm file — the example part exported as the page does it, made here under
 // node — opens as a scene of its faces, each a NURBS surface said as data in the panel and named
 // as before; the part's STEP file opens through Open CASCADE (its neck a typed cylinder) and
-// its two faces are blended G2 in the Build folder, both joins certified; an
-// IGES file is refused by name with the command that reads it; a bad .3dm or STEP keeps what
-// was shown. At 1280×800 and 390×844. Screenshots: build/browser/open-cad-*.png, open-step-*.png.
+// its two faces are blended G2 in the Build folder, both joins certified; the part exported as
+// IGES opens as its B-spline faces, named; a bad IGES, .3dm or STEP keeps what was shown. At
+// 1280×800 and 390×844. Screenshots: build/browser/open-cad-*.png, open-iges-*.png, open-step-*.png.
 //   PDESURF_WASM_DIR=build/wasm node --test tests/browser/open-cad.test.mjs
 import { describe, it, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -20,18 +20,21 @@ const APP = process.env.PDESURF_APP_DIR || path.join(ROOT, 'build', 'web');
 const built = fs.existsSync(path.join(APP, 'index.html')) && fs.existsSync(path.join(APP, 'occt-worker.js'));
 const WASM_DIR = process.env.PDESURF_WASM_DIR ? path.resolve(process.env.PDESURF_WASM_DIR) : path.join(ROOT, 'build', 'wasm');
 
-async function partAs3dm() {
+// The example part as the page exports it: a .3dm (through rhino3dm) and an IGES file.
+async function partExports() {
   const solver = await loadSolver({ moduleUrl: new URL(`file://${path.join(WASM_DIR, 'pdesurf.js')}`).href, wasmBinary: fs.readFileSync(path.join(WASM_DIR, 'pdesurf.wasm')) });
-  const fit = solver.exportCad(fs.readFileSync(path.join(ROOT, 'examples', 'cad-part.json'), 'utf8'), { format: '3dm' });
-  return Buffer.from(await write3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title, breps: fit.breps, archive: fit.archive }));
+  const scene = fs.readFileSync(path.join(ROOT, 'examples', 'cad-part.json'), 'utf8');
+  const fit = solver.exportCad(scene, { format: '3dm' });
+  const iges = Buffer.from(solver.exportCad(scene, { format: 'iges' }).text, 'latin1');
+  return { dm: Buffer.from(await write3dm(fit.faces, { tolerance: fit.tolerance, title: fit.title, breps: fit.breps, archive: fit.archive })), iges };
 }
 
 describe('opening CAD files', { skip }, () => {
-  let h, bytes;
+  let h, bytes, iges;
   const errors = [];
   before(async () => {
     h = await startHarness();
-    bytes = await partAs3dm();
+    ({ dm: bytes, iges } = await partExports());
   });
   after(async () => {
     await h?.close();
@@ -49,7 +52,7 @@ describe('opening CAD files', { skip }, () => {
         return page.locator('#status').textContent();
       };
       const before = await hooks(page);
-      assert.match(await refused('part.igs', Buffer.from('S      1\n')), /^cannot open part\.igs: the page does not read IGES files: `pdesurf import part\.igs -o scene\.json`/);
+      assert.match(await refused('junk.igs', Buffer.from('S      1\n')), /^cannot open junk\.igs: ParseError: not an IGES file/);
       assert.match(await refused('junk.step', Buffer.from('ISO-10303-21;\n')), /^cannot open junk\.step: ParseError: Open CASCADE could not read it as STEP/);
       assert.match(await refused('junk.3dm', Buffer.alloc(64)), /^cannot open junk\.3dm: ParseError: rhino3dm could not read it as a \.3dm file/);
       const kept = await hooks(page);
@@ -70,6 +73,17 @@ describe('opening CAD files', { skip }, () => {
       }
       await page.locator('#panel [data-nurbs="body"]').scrollIntoViewIfNeeded();
       await shoot(page, `open-cad-${viewport.width}.png`);
+
+      // The part as an IGES file (the page's own export): its B-spline faces, named as its patches.
+      const before3 = (await hooks(page)).solveCount;
+      await pick('part.igs', iges);
+      assert.equal((await solvedAfter(page, before3)).lastError, null);
+      assert.match(await page.locator('#scene-title').textContent(), /part\.igs/);
+      for (const name of ['body', 'neck', 'shoulder', 'base', 'cap']) {
+        assert.match(await page.locator(`#panel [data-nurbs="${name}"]`).textContent(), /^NURBS surface: degree 5 × 5, \d+ × \d+ control points/, `${name} from IGES`);
+      }
+      await page.locator('#panel [data-nurbs="body"]').scrollIntoViewIfNeeded();
+      await shoot(page, `open-iges-${viewport.width}.png`);
 
       // The example part's STEP file (examples/cad/part.step) through Open CASCADE in its worker.
       const again = (await hooks(page)).solveCount;

@@ -1,6 +1,6 @@
 // Wiring of the "File" folder: exports (scene JSON; OBJ, STL, GLB, 3MF of the watertight mesh
 // and STEP, IGES, 3dm fitted, both made in the solver's worker; PNG; web/export/) and
-// opening a scene file, or a .3dm file's surfaces (web/cad/read-3dm.js), by the picker or by
+// opening a scene file, or a CAD file's surfaces (.3dm, STEP, IGES: web/cad/), by the picker or by
 // dropping it on the page (web/import/). A file
 // that cannot be read, or whose scene does not solve, leaves the page as it was: the drawn
 // surfaces, the panel, the example id and the URL hash. For the second case the scene shown
@@ -49,15 +49,16 @@ export function createFilesFeature({ panel, viewer, state, status, hooks, solver
   }
 
   // A CAD file's faces as a scene (docs/cad-import.md): .3dm through rhino3dm, STEP through
-  // Open CASCADE, each in a worker of its own started on first use; IGES through `pdesurf
-  // import` (the page's Open CASCADE build reads no IGES).
+  // Open CASCADE, IGES's B-spline surfaces by read-iges.js; each in a worker of its own started
+  // on first use.
   async function readCadFile(file, name) {
     const ext = name.toLowerCase().split('.').pop();
-    if (ext === 'igs' || ext === 'iges') {
-      throw new Error(`the page does not read IGES files: \`pdesurf import ${name} -o scene.json\` writes its faces as a scene, which opens here`);
-    }
     const { checkFileSize } = await import('../cad/cad-scene.js');
     checkFileSize(file.size);
+    if (ext === 'igs' || ext === 'iges') {
+      status.info(`reading ${name}…`);
+      return { scene: await (await import('../cad/import-iges.js')).importIges(await file.arrayBuffer(), name), title: null, download: null };
+    }
     const step = ext === 'step' || ext === 'stp';
     status.info(`reading ${name} (${step ? 'Open CASCADE, 23 MB,' : 'rhino3dm'} loads on first use)…`);
     // Open CASCADE's first download, said as it comes (at most once a percent).

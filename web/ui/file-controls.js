@@ -32,7 +32,7 @@ export function buildFileFolder(gui, handlers) {
     c.domElement.title = title;
     return c;
   };
-  button('open', 'open scene or CAD file…', "open a scene (.json), or the surfaces of a STEP or Rhino .3dm file, from this computer; or drop the file on the page");
+  button('open', 'open scene or CAD file…', "open a scene (.json), or the surfaces of a STEP, IGES or Rhino .3dm file, from this computer; or drop the file on the page");
   button('json', 'export scene JSON', 'the scene as a file the page and the pdesurf CLI open');
   folder.$children.append(buttonRow('export mesh', MESH_BUTTONS, (format) => handlers.mesh(format)));
   const tol = folder.add(cad, 'tolerance').name(escapeHtml('CAD tolerance'));
