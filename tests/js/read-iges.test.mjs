@@ -222,7 +222,7 @@ test('bad IGES files are named errors, bounded before the work', () => {
   assert.equal(readIges(good).patches.length, 1);
   rejects('not an IGES file\n', 'ParseError', /not an IGES file/);
   rejects(good.slice(0, good.indexOf('P      1') - 72), 'ParseError', /parameters lie outside the file/); // cut in the parameters
-  rejects(igesText([surface({ params: surface().params.map((t, k) => (k === 26 ? 'NaN' : t)) })]), 'NonFinite', /"NaN" is not a finite number/);
+  rejects(igesText([surface({ params: surface().params.map((t, k) => (k === 26 ? 'NaN' : t)) })]), 'NonFinite', /^face 1 of 1 \(directory line 1\), parameter 26: "NaN" is not a finite number/);
   rejects(igesText([surface({ params: surface().params.map((t, k) => (k === 18 ? '0.' : t)) })]), 'InvalidField', /a weight is not positive/);
   // Counts and degree judged before any number is read: 200 × 200 poles, degree 30.
   rejects(igesText([surface({ params: ['128', '199', '199', '3', '3', '0', '0', '1', '0', '0'] })]), 'TooLarge', /200 × 200 control points/);

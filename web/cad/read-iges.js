@@ -83,12 +83,16 @@ function sections(text) {
     });
   }
   const byDe = (de) => (Number.isInteger(de) && de > 0 && de % 2 === 1 ? entities[(de - 1) / 2] : undefined);
+  const parsed = new Map(); // entity -> its parameters, read once
   const params = (e) => {
+    if (parsed.has(e)) return parsed.get(e);
     if (!(e.pointer >= 1 && e.lines >= 1 && e.pointer + e.lines - 1 <= P.length)) {
       throw new CadFileError('ParseError', `entity ${e.type} at directory line ${e.de}: its parameters lie outside the file`);
     }
     const text = P.slice(e.pointer - 1, e.pointer - 1 + e.lines).map((l) => l.slice(0, 64)).join('');
-    return parameters(text, delimiter, end, `entity ${e.type} at directory line ${e.de}`);
+    const p = parameters(text, delimiter, end, `entity ${e.type} at directory line ${e.de}`);
+    parsed.set(e, p);
+    return p;
   };
   return { global, entities, byDe, params };
 }
@@ -208,8 +212,10 @@ export function readIges(text, { fileName = 'the file' } = {}) {
   checkFaceCount(readable.length);
   const taken = new Set();
   const patches = readable.map(({ surface, face }, k) => {
-    const name = uniqueName(nameOf(file, face ? [face, surface] : [surface]), k, taken);
-    return bsplinePatch(file, surface, name, `face '${name}' (${k + 1} of ${readable.length})`, scale);
+    // Read (its size checked first), then named: a name property is among its last parameters.
+    const patch = bsplinePatch(file, surface, '', `face ${k + 1} of ${readable.length} (directory line ${surface.de})`, scale);
+    patch.name = uniqueName(nameOf(file, face ? [face, surface] : [surface]), k, taken);
+    return patch;
   });
   const note = skipped.length ? ` ${skipped.length} faces on ${kinds.join(', ')} not read (the page reads B-spline surfaces only; \`pdesurf import\` reads them).` : '';
   return cadScene(fileName, patches, note);
