@@ -108,7 +108,7 @@ describe('opening CAD files', { skip }, () => {
     });
   }
 
-  it('the production page opens the STEP file through its own copy of Open CASCADE, saying how much of it has come', { skip: built ? false : `no ${APP}/occt-worker.js: run node scripts/build-web.mjs` }, async () => {
+  it('the production page opens the STEP file through its own copy of Open CASCADE, saying how much of it has come, and an IGES file', { skip: built ? false : `no ${APP}/occt-worker.js: run node scripts/build-web.mjs` }, async () => {
     const page = await h.open('/app/#example=you2004-fig2a', { viewport: { width: 1280, height: 800 } });
     page.on('pageerror', (e) => errors.push(String(e)));
     // Every text the status line shows while the file opens.
@@ -129,6 +129,11 @@ describe('opening CAD files', { skip }, () => {
     const progress = said.filter((t) => /^loading Open CASCADE to read part\.step: [\d.]+ MiB of 21\.9 MiB \(\d+ %\)…$/.test(t));
     assert.ok(progress.length >= 2, `the status line said the download's progress: ${JSON.stringify(said.slice(0, 6))}`);
     assert.ok(said.includes('reading part.step…'), 'then that it reads the file');
+    // And an IGES file, through the bundle's own IGES worker.
+    const more = (await hooks(page)).solveCount;
+    await page.locator('[data-file="input"]').setInputFiles({ name: 'part.igs', mimeType: 'application/octet-stream', buffer: iges });
+    assert.equal((await solvedAfter(page, more)).lastError, null);
+    assert.equal(await page.locator('#panel [data-nurbs="body"]').count(), 1);
     await page.close();
   });
 
