@@ -5,7 +5,7 @@
 // matrices (124), in inches, millimetres and metres, with another parameter
 // delimiter. The same surfaces at the same (t, v) (both scenes solved by the module); chains of
 // 124s against their product (Open CASCADE applies only the first). Then
-// bad files: named errors, bounded before the work.
+// bad files: named errors, bounded before the work; 600 mutations of a real file.
 //   PDESURF_CLI=build/native/pdesurf node --test tests/js/read-iges.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -238,4 +238,62 @@ test('bad IGES files are named errors, bounded before the work', () => {
   rejects(igesText([plane, { type: 144, params: ['144', '1', '1', '0', '0'] }]), 'InvalidField', /plane \(entity 108\).*pdesurf import x\.igs/);
   rejects('x'.repeat(10), 'ParseError', /not an IGES file/);
   assert.throws(() => readIges({ length: 65 << 20 }), (e) => e.code === 'TooLarge' && /at most 64 MB/.test(e.message));
+});
+
+test('mutated IGES files are read or refused by name, never another error', { skip }, async () => {
+  // 600 mutations of a real file (pdesurf's export of fig4a): characters changed, lines cut,
+  // lines repeated, numbers made huge or negative. Each is either a scene the module then
+  // solves or refuses by name, or a CadFileError; never a TypeError, never a hang.
+  const file = path.join(dir, 'mutate.igs');
+  const r = spawnSync(CLI, ['export', path.join(REPO, 'examples', 'you2004-fig4a.json'), '-o', file], { encoding: 'utf8' });
+  assert.equal(r.status, 0, r.stderr);
+  const original = fs.readFileSync(file, 'latin1');
+  const lines = original.split('\n');
+  const solver = await loadTestSolver();
+  const rnd = random(42);
+  const pick = (n) => Math.floor(rnd() * n);
+  const counts = { read: 0, refused: 0, solved: 0, solveRefused: 0 };
+  for (let trial = 0; trial < 600; trial++) {
+    let text;
+    const kind = trial % 5;
+    if (kind === 0) { // characters changed
+      const a = original.split('');
+      for (let k = 0; k < 1 + pick(8); k++) a[pick(a.length)] = ' 0123456789.,;-+EDH()xyz\n'[pick(25)];
+      text = a.join('');
+    } else if (kind === 1) { // cut anywhere
+      text = original.slice(0, pick(original.length));
+    } else if (kind === 2) { // a line dropped or repeated
+      const l = [...lines];
+      const at = pick(l.length);
+      if (rnd() < 0.5) l.splice(at, 1); else l.splice(at, 0, l[at]);
+      text = l.join('\n');
+    } else if (kind === 3) { // a number made huge, negative or a fraction
+      text = original.replace(/\d+(\.\d*)?(E[-+]?\d+)?/g, (m) => (rnd() < 0.02 ? ['1E308', '-7', '0.5', '99999999', '1E-320'][pick(5)] : m));
+    } else { // a directory field changed
+      const l = [...lines];
+      const d = l.map((x, k) => (x[72] === 'D' ? k : -1)).filter((k) => k >= 0);
+      const at = d[pick(d.length)];
+      const f = pick(9);
+      l[at] = l[at].slice(0, 8 * f) + String([0, 1, 3, -5, 99999, 124, 128, 510][pick(8)]).padStart(8) + l[at].slice(8 * f + 8);
+      text = l.join('\n');
+    }
+    let scene;
+    try {
+      scene = readIges(text, { fileName: 'm.igs' });
+      counts.read++;
+    } catch (e) {
+      assert.ok(e instanceof CadFileError, `trial ${trial} (kind ${kind}): ${e?.stack ?? e}`);
+      assert.ok(e.code && e.message, `trial ${trial}: a code and a message`);
+      counts.refused++;
+      continue;
+    }
+    try {
+      solver.solve(JSON.stringify(scene), { nu: 8, nv: 8 });
+      counts.solved++;
+    } catch (e) {
+      assert.ok(e.code && e.code !== 'Internal', `trial ${trial} (kind ${kind}): the module's error ${e.code}: ${e.message}`);
+      counts.solveRefused++;
+    }
+  }
+  console.log(`600 mutated files: ${JSON.stringify(counts)}`);
 });
