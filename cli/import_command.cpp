@@ -11,7 +11,7 @@ namespace pdesurf::cli {
 
 int runImport(const Options& o, std::ostream& out) {
 #ifdef PDESURF_CAD_IMPORT
-  // Compact: the scene it checked (parseScene, within the 1 MiB of a scene) is the text written.
+  // Compact: the scene it checked (parseScene, within the 16 MiB of a scene) is the text written.
   const std::string text = cad_import::importCadFile(o.scenePath).dump() + "\n";
   if (o.output.empty()) {
     out << text;

@@ -8,10 +8,14 @@
 namespace pdesurf::limits {
 
 // Text.
-constexpr size_t kSceneBytes = 1 << 20;        // a scene file, or a link's inflated content
+// A scene's text (a file, the module's argument): 16 MiB, as imported CAD faces need it (the
+// aeroplane's 22 certified faces through STEP are 4.4 MB of compact JSON; a scene of 64 faces
+// of a few hundred control points each is several MB). A link stays at 1 MiB: a larger scene
+// is shared as a file.
+constexpr size_t kSceneBytes = 16 << 20;
 constexpr int kJsonDepth = 32;                 // nesting of arrays and objects, outermost = 1
 constexpr size_t kLinkChars = 2 << 20;         // a link's text, before any decoding
-constexpr size_t kInflatedBytes = kSceneBytes;  // what a link may inflate to
+constexpr size_t kInflatedBytes = 1 << 20;     // what a link may inflate to
 constexpr size_t kExpressionChars = 1000;      // one expression string
 constexpr size_t kNameChars = 64;              // a patch name or id
 
@@ -51,7 +55,7 @@ constexpr double kEndScale = 100;
 constexpr size_t kSceneDerivedNodes = size_t{1} << 20;
 // A "surface" given as NURBS (scene/nurbs_json.hpp): its degree in each direction (Open
 // CASCADE's own maximum) and its control points. Each point costs one B-spline evaluation per
-// sample of the surface only along its rows (below); the scene's 1 MiB of text holds ~16 000 points.
+// sample of the surface only along its rows (below); 16 384 points are ~1 MB of scene text.
 constexpr int kNurbsDegree = 25;
 constexpr size_t kNurbsPoints = 16384;  // 128²: pdesurf's own CAD faces reach 28 × 153
 // And the work of one evaluation of it, counted before it is built: the de Boor steps of its

@@ -33,7 +33,8 @@ void checkNesting(const std::string& text) {
 
 nlohmann::json readJson(const std::string& text) {
   if (text.size() > limits::kSceneBytes)
-    throw Error(ErrorCode::TooLarge, "JSON text larger than 1 MiB (" + std::to_string(text.size()) + " bytes)");
+    throw Error(ErrorCode::TooLarge, "JSON text larger than " + std::to_string(limits::kSceneBytes >> 20) + " MiB (" +
+                                         std::to_string(text.size()) + " bytes)");
   checkNesting(text);
   std::vector<std::set<std::string>> keys;  // per open object
   const auto strict = [&keys](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {

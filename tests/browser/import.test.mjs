@@ -1,7 +1,8 @@
 // Opening a scene file (web/features/files.js, web/import/): by the picker (the hidden input
 // data-file="input") and by dropping it on the page (a DataTransfer built in the page). A good
 // file opens like an example or a link (its title, no example id, the link in the hash once
-// solved); the page's own export opens back to the same surfaces. Every bad file (not JSON,
+// solved); the page's own export opens back to the same surfaces; a scene too large for a link
+// opens, says so and leaves no older link in the hash. Every bad file (not JSON,
 // a list, no patches, repeated keys, too deep, too large, not UTF-8, a scene the solver
 // refuses) says "cannot open <name>: <code>: <message>" and keeps what was shown: checksum,
 // example id, URL hash, camera and the panel.
@@ -119,6 +120,24 @@ describe('opening scene files', { skip }, () => {
     assert.equal(await page.evaluate(() => document.body.classList.contains('file-drop')), false);
   });
 
+  it('a scene past a link\'s 1 MiB (an imported CAD part\'s size) opens and solves; the page says it is kept as a file, and the hash names no older scene', async () => {
+    // Two 110 × 110 bicubic sheets: 24 200 control points at full precision, ~1.4 MB of text.
+    const n = 110, knots = [0, 0, 0, 0, ...Array.from({ length: n - 4 }, (_, k) => (k + 1) / (n - 3)), 1, 1, 1, 1];
+    const sheet = (name, dz) => ({ name, kind: 'surface', nurbs: { degree: [3, 3], knots: [knots, knots],
+      points: Array.from({ length: n }, (_, i) => Array.from({ length: n }, (_, j) => [i / Math.PI, j / Math.E, dz + 0.3 * Math.sin(i / 7) * Math.cos(j / 9)])) } });
+    const text = JSON.stringify({ format: 'pdesurf-scene', version: 4, title: 'big sheets', patches: [sheet('lower', 0), sheet('upper', 5)] });
+    assert.ok(text.length > 1.2 * MiB, `${text.length} characters`);
+    const before = await hooks(page);
+    await pick('big-sheet.json', text);
+    const opened = await solvedAfter(page, before.solveCount);
+    assert.equal(opened.lastError, null);
+    await page.waitForFunction(() => /too large for a link/.test(document.getElementById('status').textContent), null, { timeout: 20_000 });
+    assert.match(await statusText(), /; the scene is too large for a link \(\d+ bytes, at most 1048576\): keep it with File → export scene JSON$/);
+    assert.equal(await page.evaluate(() => location.hash), '', 'the hash names no older scene');
+    assert.equal(await page.locator('#panel [data-share="length"] input').inputValue(), 'too large for a link');
+    await shoot(page, 'import-too-large-for-a-link.png');
+  });
+
   describe('a bad file keeps the scene shown', () => {
     let was;
     before(async () => {
@@ -141,7 +160,7 @@ describe('opening scene files', { skip }, () => {
       ['no-patches.json', '{"title": "x"}', /^cannot open no-patches\.json: InvalidField: the file holds no scene: a scene has a "patches" list$/],
       ['twice.json', '{"patches": [], "patches": []}', /^cannot open twice\.json: ParseError: the file is not a valid scene: the key "patches" appears twice in one object$/],
       ['deep.json', `{"patches": ${'['.repeat(40)}${']'.repeat(40)}}`, /^cannot open deep\.json: TooLarge: the file is nested deeper than 32 levels$/],
-      ['big.json', `{"patches": [], "notes": "${'x'.repeat(MiB)}"}`, /^cannot open big\.json: TooLarge: the file has \d+ bytes; a scene file has at most 1048576 \(1 MiB\)$/],
+      ['big.json', `{"patches": [], "notes": "${'x'.repeat(16 * MiB)}"}`, /^cannot open big\.json: TooLarge: the file has \d+ bytes; a scene file has at most 16777216 \(16 MiB\)$/],
       ['latin1.json', Buffer.from([0x7b, 0x22, 0xe9, 0x22, 0x3a, 0x31, 0x7d]), /^cannot open latin1\.json: ParseError: the file is not UTF-8 text$/],
     ];
     for (const [name, text, pattern] of cases) {

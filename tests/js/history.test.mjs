@@ -3,7 +3,7 @@
 //   node --test tests/js/history.test.mjs
 import { describe, it } from 'node:test';
 import assert from 'node:assert/strict';
-import { createHistory, sameSnapshot, DEFAULT_CAPACITY } from '../../web/state/history.js';
+import { createHistory, sameSnapshot, DEFAULT_CAPACITY, DEFAULT_MAX_CHARS } from '../../web/state/history.js';
 
 const snap = (value, extra = {}) => ({
   sceneText: JSON.stringify({ parameters: { r: { value } } }),
@@ -100,6 +100,23 @@ describe('undo history', () => {
     assert.deepEqual([h.undo(), h.undo(), h.undo()].map(valueOf), [8, 7, 6]);
     assert.equal(h.undo(), null);
     assert.throws(() => createHistory({ capacity: 0 }), RangeError);
+  });
+
+  it('the steps hold at most maxChars of scene text: large scenes drop the oldest, the current one stays', () => {
+    const big = (value, chars) => snap(value, { sceneText: JSON.stringify({ parameters: { r: { value } }, pad: 'x'.repeat(chars) }) });
+    const h = createHistory({ maxChars: 1000 });
+    for (let v = 0; v < 10; v++) h.push(big(v, 280)); // ~320 characters each: three fit
+    assert.equal(h.depth(), 2, 'the base and two steps');
+    assert.deepEqual([h.undo(), h.undo()].map(valueOf), [8, 7]);
+    assert.equal(h.undo(), null);
+    // One scene past the budget alone is still the current step (nothing to undo to).
+    const one = createHistory({ maxChars: 100 });
+    one.push(big(0, 50));
+    one.push(big(1, 500));
+    assert.equal(valueOf(one.current()), 1);
+    assert.equal(one.depth(), 0);
+    // The page's default: 64 MiB, four scenes at the 16 MiB a scene may be.
+    assert.equal(DEFAULT_MAX_CHARS, 64 << 20);
   });
 
   it('replace() swaps the current step and cuts the redo branch', () => {

@@ -40,7 +40,10 @@ TEST_CASE("scene errors: malformed text") {
   CHECK(outcome("[1, 2]") == "InvalidField: scene: expected an object");
   CHECK(outcome(std::string(40, '[') + std::string(40, ']')).find("nested deeper") != std::string::npos);
   CHECK(outcome("{\"x\": 1e999}").rfind("ParseError", 0) == 0);
-  CHECK(outcome(std::string(2 << 20, ' ')).find("larger than 1 MiB") != std::string::npos);
+  CHECK(outcome(std::string((16 << 20) + 1, ' ')).find("larger than 16 MiB (16777217 bytes)") != std::string::npos);
+  // Below it, a scene of megabytes parses (an imported CAD part's faces): 2 MiB of blanks is
+  // malformed, not too large.
+  CHECK(outcome(std::string(2 << 20, ' ')).rfind("ParseError", 0) == 0);
 }
 
 TEST_CASE("scene errors: the limits and strictness of docs/limits.md") {

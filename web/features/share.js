@@ -28,7 +28,12 @@ export function createShareFeature({ viewer, panel, status, hooks }) {
     // The last good scene: a camera move after a failed solve must not link the broken one.
     snapshot: () => good && { scene: JSON.parse(good.text), grid: { ...good.grid }, camera: viewer.getCamera() },
     onWritten: showLength,
-    onError: (err) => status.error(`cannot make a link: ${messageOf(err)}`),
+    onError: (err) => {
+      if (err?.code !== 'TooLarge') return status.error(`cannot make a link: ${messageOf(err)}`);
+      // A scene past a link's 1 MiB (an imported CAD part): it works, it is kept as a file.
+      panel.showLinkLength(null);
+      if (!status.showsError()) status.warn(`${summary}; ${messageOf(err)}: keep it with File → export scene JSON`);
+    },
   });
   sync.watchCamera(viewer.controls);
 

@@ -5,7 +5,7 @@
 // the core's name for it (TooLarge, ParseError, InvalidField).
 import { parseJsonText, JsonTextError } from '../link/strict-json.js';
 
-export const MAX_SCENE_FILE_BYTES = 1 << 20; // 1 MiB
+export const MAX_SCENE_FILE_BYTES = 16 << 20; // 16 MiB (cpp/common/limits.hpp kSceneBytes)
 
 export class SceneFileError extends Error {
   constructor(code, message) {
@@ -20,7 +20,7 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 /** A File (or Blob with a name) -> { scene, title }; throws SceneFileError. */
 export async function readSceneFile(file) {
   if (file.size > MAX_SCENE_FILE_BYTES) {
-    throw new SceneFileError('TooLarge', `the file has ${file.size} bytes; a scene file has at most ${MAX_SCENE_FILE_BYTES} (1 MiB)`);
+    throw new SceneFileError('TooLarge', `the file has ${file.size} bytes; a scene file has at most ${MAX_SCENE_FILE_BYTES} (16 MiB)`);
   }
   let bytes;
   try {

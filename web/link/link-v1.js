@@ -6,7 +6,7 @@ import { encodeBase64url, decodeBase64url } from './base64url.js';
 const deflate = () => import('./deflate.js');
 import { parseStrictJson } from './strict-json.js';
 
-export const MAX_INFLATED_BYTES = 1 << 20; // 1 MiB, the scene size limit
+export const MAX_INFLATED_BYTES = 1 << 20; // 1 MiB (cpp/common/limits.hpp kInflatedBytes); a larger scene is shared as a file
 export const GRID_MIN = 4;
 export const GRID_MAX = 256;
 
@@ -30,7 +30,8 @@ export async function encodeV1(state) {
   if (!isObject(state) || !isObject(state.scene)) throw new LinkError('nothing to link: the page has no scene');
   const bytes = new TextEncoder().encode(JSON.stringify(pickState(state)));
   if (bytes.length > MAX_INFLATED_BYTES) {
-    throw new LinkError(`the scene is too large for a link (${bytes.length} bytes, at most ${MAX_INFLATED_BYTES})`);
+    // code TooLarge: the page then says so and keeps no stale link (web/features/share.js).
+    throw Object.assign(new LinkError(`the scene is too large for a link (${bytes.length} bytes, at most ${MAX_INFLATED_BYTES})`), { code: 'TooLarge' });
   }
   return encodeBase64url(await (await deflate()).deflateRaw(bytes));
 }

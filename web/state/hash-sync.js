@@ -3,13 +3,15 @@
 // Encoding is async (CompressionStream), so at most one encode runs; requests made
 // meanwhile collapse into one, and the newest state wins.
 import { encodeState } from '../link/link-codec.js';
-import { writeLinkToHash } from './hash.js';
+import { writeLinkToHash, clearHash } from './hash.js';
 
 export const CAMERA_REST_MS = 500; // an orbit updates the link once the view rests
 
 /**
  * snapshot() -> { scene, grid, camera } or null (nothing to link yet), taken when a
- * request is made; onWritten(url) after each hash write; onError(err) when encoding fails.
+ * request is made; onWritten(url) after each hash write; onError(err) when encoding fails
+ * (a scene too large for a link, err.code 'TooLarge', first empties the hash: it must not
+ * keep naming an older scene).
  */
 export function createHashSync({ snapshot, onWritten, onError }) {
   let epoch = 0; // bumped by cancel(): an encode started before it must not write
@@ -24,7 +26,9 @@ export function createHashSync({ snapshot, onWritten, onError }) {
       writeLinkToHash(link);
       onWritten(location.href);
     } catch (err) {
-      if (myEpoch === epoch) onError(err);
+      if (myEpoch !== epoch) return;
+      if (err?.code === 'TooLarge') clearHash();
+      onError(err);
     }
   }
 

@@ -37,6 +37,12 @@ export function writeExampleIdToHash(id) {
   markHashShown();
 }
 
+/** Empty the hash, the same way: the page shows what no link can hold (a reload opens the default). */
+export function clearHash() {
+  history.replaceState(null, '', location.pathname + location.search);
+  markHashShown();
+}
+
 /** Write a shared-state link ("s=1.…") into the hash, the same way. */
 export function writeLinkToHash(link) {
   history.replaceState(null, '', '#' + link);

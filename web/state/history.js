@@ -5,6 +5,9 @@
 // side is web/features/history.js.
 
 export const DEFAULT_CAPACITY = 200; // undoable steps kept; the oldest go first
+// And at most this much scene text in all: a scene may be 16 MiB (an imported CAD part), and
+// 200 of those would hold gigabytes. The oldest go first; the current step always stays.
+export const DEFAULT_MAX_CHARS = 64 << 20;
 
 function freeze({ sceneText, grid, exampleId = null, title = '' }) {
   if (typeof sceneText !== 'string') throw new TypeError('a snapshot needs its scene as JSON text');
@@ -22,10 +25,11 @@ export function sameSnapshot(a, b) {
     && a.grid.nv === b.grid.nv && a.exampleId === b.exampleId && a.title === b.title;
 }
 
-export function createHistory({ capacity = DEFAULT_CAPACITY } = {}) {
+export function createHistory({ capacity = DEFAULT_CAPACITY, maxChars = DEFAULT_MAX_CHARS } = {}) {
   if (!(Number.isInteger(capacity) && capacity >= 1)) throw new RangeError('capacity must be a positive integer');
   let steps = []; // snapshots, oldest first
   let at = -1; // index of the one the page shows
+  const charsOf = (list) => list.reduce((n, s) => n + s.sceneText.length, 0);
 
   return {
     capacity,
@@ -36,7 +40,8 @@ export function createHistory({ capacity = DEFAULT_CAPACITY } = {}) {
       if (sameSnapshot(snap, steps[at])) return false;
       steps = steps.slice(0, at + 1);
       steps.push(snap);
-      if (steps.length > capacity + 1) steps.shift();
+      let chars = charsOf(steps);
+      while (steps.length > 1 && (steps.length > capacity + 1 || chars > maxChars)) chars -= steps.shift().sceneText.length;
       at = steps.length - 1;
       return true;
     },

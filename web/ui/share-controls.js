@@ -16,9 +16,10 @@ export function buildShareFolder(gui, onCopy) {
   lengthCtrl.domElement.dataset.share = 'length';
   return {
     folder: folder.domElement,
+    /** chars: the link's length, or null when the scene is too large for one. */
     showLength(chars) {
-      const long = chars > LONG_LINK;
-      model.length = long ? `${chars} characters (> ${LONG_LINK})` : `${chars} characters`;
+      const long = chars === null || chars > LONG_LINK;
+      model.length = chars === null ? 'too large for a link' : long ? `${chars} characters (> ${LONG_LINK})` : `${chars} characters`;
       lengthCtrl.updateDisplay();
       lengthCtrl.domElement.classList.toggle('warn', long);
     },
