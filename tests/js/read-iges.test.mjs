@@ -237,6 +237,14 @@ test('bad IGES files are named errors, bounded before the work', () => {
   // Only planes: nothing the page reads, said with the command that reads them.
   const plane = { type: 108, params: ['108', '0.', '0.', '1.', '0.', '0', '0.', '0.', '0.', '0.'] };
   rejects(igesText([plane, { type: 144, params: ['144', '1', '1', '0', '0'] }]), 'InvalidField', /plane \(entity 108\).*pdesurf import x\.igs/);
+  // 70 faces on planes before 3 on B-splines: the three are read (faces the page does not read
+  // do not count towards the 64), the planes named in the description.
+  const mixed = [];
+  for (let k = 0; k < 70; k++) mixed.push(plane, { type: 144, params: ['144', String(2 * mixed.length + 1), '1', '0', '0'] });
+  for (let k = 0; k < 3; k++) mixed.push(surface(), { type: 144, params: ['144', String(2 * mixed.length + 1), '1', '0', '0'] });
+  const read = readIges(igesText(mixed), { fileName: 'mixed.igs' });
+  assert.equal(read.patches.length, 3);
+  assert.match(read.description, / 70 faces on plane \(entity 108\) not read/);
   rejects('x'.repeat(10), 'ParseError', /not an IGES file/);
   assert.throws(() => readIges({ length: 65 << 20 }), (e) => e.code === 'TooLarge' && /at most 64 MB/.test(e.message));
 });

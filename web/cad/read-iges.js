@@ -10,7 +10,7 @@
 // does. Names: a 510 face's label, or a 406 name property, else "face k".
 // Bounded before the work: the file's size, the faces (counted before any is converted), each
 // face's control points and degree (before its numbers are read).
-import { CadFileError, cadScene, checkFaceCount, checkFaceSize, checkFileSize, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
+import { CadFileError, MAX_PATCHES, cadScene, checkFaceCount, checkFaceSize, checkFileSize, nurbsPatch, swapsOf, uniqueName } from './cad-scene.js';
 import { nurbsPoint } from './nurbs-point.js';
 
 // Millimetres per unit, IGES 5.3 global field 14.
@@ -193,6 +193,7 @@ export function readIges(text, { fileName = 'the file' } = {}) {
   // The faces: the surfaces faces stand on, in the file's order, each once.
   let faces = [];
   const seen = new Set();
+  let bsplines = 0;
   for (const e of file.entities) {
     if (!FACE_TYPES.has(e.type)) continue;
     const surface = file.byDe(Number(file.params(e)[1]));
@@ -200,7 +201,7 @@ export function readIges(text, { fileName = 'the file' } = {}) {
     if (seen.has(surface.de)) continue;
     seen.add(surface.de);
     faces.push({ surface, face: e });
-    if (faces.length > 64 + 1) break; // counted, not converted: a scene holds 64
+    if (surface.type === 128 && ++bsplines > MAX_PATCHES) break; // counted, not converted: refused below
   }
   if (!faces.length) faces = file.entities.filter((e) => e.type === 128 && e.subordinate === 0).map((surface) => ({ surface, face: null }));
   const readable = faces.filter(({ surface }) => surface.type === 128);
