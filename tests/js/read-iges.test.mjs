@@ -244,6 +244,10 @@ test('bad IGES files are named errors, bounded before the work', () => {
   for (let k = 0; k < 3; k++) mixed.push(surface(), { type: 144, params: ['144', String(2 * mixed.length + 1), '1', '0', '0'] });
   const read = readIges(igesText(mixed), { fileName: 'mixed.igs' });
   assert.equal(read.patches.length, 3);
+  // A bounded surface (143) names its surface second, after its type.
+  const bounded = readIges(igesText([surface(), { type: 143, params: ['143', '0', '1', '0'] }]), { fileName: 'bounded.igs' });
+  assert.equal(bounded.patches.length, 1);
+  assert.equal(bounded.patches[0].nurbs.points.length, 2);
   assert.match(read.description, / 70 faces on plane \(entity 108\) not read/);
   rejects('x'.repeat(10), 'ParseError', /not an IGES file/);
   assert.throws(() => readIges({ length: 65 << 20 }), (e) => e.code === 'TooLarge' && /at most 64 MB/.test(e.message));

@@ -16,7 +16,9 @@ import { nurbsPoint } from './nurbs-point.js';
 // Millimetres per unit, IGES 5.3 global field 14.
 const MM_PER_UNIT = { 1: 25.4, 2: 1, 4: 304.8, 5: 1609344, 6: 1000, 7: 1e6, 8: 0.0254, 9: 0.001, 10: 10, 11: 2.54e-5 };
 const SURFACE_NAMES = { 108: 'plane', 114: 'parametric spline surface', 118: 'ruled surface', 120: 'surface of revolution', 122: 'tabulated cylinder', 140: 'offset surface', 190: 'plane', 192: 'cylinder', 194: 'cone', 196: 'sphere', 198: 'torus' };
-const FACE_TYPES = new Set([510, 144, 143]); // each names its surface in its first parameter
+// The entities faces are read from, and where each names its surface: a face (510) and a
+// trimmed surface (144) first, a bounded surface (143) second, after its type.
+const SURFACE_PARAMETER = { 510: 1, 144: 1, 143: 2 };
 
 /** The parameters of a section's text: numbers as text, Hollerith strings as { text }. */
 function parameters(text, delimiter, end, where) {
@@ -195,8 +197,8 @@ export function readIges(text, { fileName = 'the file' } = {}) {
   const seen = new Set();
   let bsplines = 0;
   for (const e of file.entities) {
-    if (!FACE_TYPES.has(e.type)) continue;
-    const surface = file.byDe(Number(file.params(e)[1]));
+    if (!(e.type in SURFACE_PARAMETER)) continue;
+    const surface = file.byDe(Number(file.params(e)[SURFACE_PARAMETER[e.type]]));
     if (!surface) throw new CadFileError('InvalidField', `entity ${e.type} at directory line ${e.de}: its surface pointer names no entity`);
     if (seen.has(surface.de)) continue;
     seen.add(surface.de);
