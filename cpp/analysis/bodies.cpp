@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cad/creases.hpp"
+#include "common/errors.hpp"
 #include "surface/combine_rows.hpp"
 #include "surface/tabulation.hpp"
 
@@ -32,6 +33,57 @@ std::vector<double> uniform(double a, double b, int n) {
   return out;
 }
 
+// The borders' figures on one 9 × 9 grid, tabulated once (point by point, 42 evaluations a
+// face were most of the bodies' time).
+void measureBorders(const SeparableSurface& s, FaceMeasure* m) {
+  constexpr int n = 8;
+  std::vector<double> us = uniform(s.u0, s.u1, n), vs = uniform(s.v0, s.v1, n);
+  std::vector<Eigen::Vector3d> x(size_t(n + 1) * (n + 1));  // [j * (n + 1) + i]
+  try {
+    const Tabulation t = tabulateAt(s, us, vs, 1);  // positions; the rows' partials come with them
+    combineRows(t, [&](int j, const GridRow& row) {
+      for (int i = 0; i <= n; ++i) x[size_t(j) * (n + 1) + i] = Eigen::Vector3d(row.at(0, 0)[i], row.at(0, 1)[i], row.at(0, 2)[i]);
+    });
+  } catch (const Error&) {  // a partial not finite on a border: point by point, as before
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) x[size_t(j) * (n + 1) + i] = evalPoint(s, us[size_t(i)], vs[size_t(j)]);
+  }
+  const auto at = [&](int i, int j) -> const Eigen::Vector3d& { return x[size_t(j) * (n + 1) + i]; };
+  m->seamGap = 0;
+  for (int i : {0, n / 2, n}) {
+    const double gap = (at(i, 0) - at(i, n)).norm();
+    if (!(gap <= m->seamGap)) m->seamGap = gap;  // NaN stays: not closed
+  }
+  for (int b = 0; b < 4; ++b) {
+    double spread = 0;
+    for (int k = 0; k <= n; ++k) {
+      const Eigen::Vector3d& p = b == 0 ? at(0, k) : b == 1 ? at(n, k) : b == 2 ? at(k, 0) : at(k, n);
+      const Eigen::Vector3d& first = b == 0 ? at(0, 0) : b == 1 ? at(n, 0) : b == 2 ? at(0, 0) : at(0, n);
+      spread = std::max(spread, (p - first).norm());
+    }
+    m->borderSpread[b] = spread;
+  }
+}
+
+// Border b of s (0: u0, 1: u1, 2: v0, 3: v1) at ts along it, from one tabulation of that line.
+std::vector<Eigen::Vector3d> borderPointsOf(const SeparableSurface& s, int b, const std::vector<double>& ts) {
+  std::vector<Eigen::Vector3d> out(ts.size());
+  if (ts.empty()) return out;
+  const bool fixedU = b < 2;
+  const double at = b == 0 ? s.u0 : b == 1 ? s.u1 : b == 2 ? s.v0 : s.v1;
+  try {
+    const Tabulation t = fixedU ? tabulateAt(s, {at}, ts, 1) : tabulateAt(s, ts, {at}, 1);
+    combineRows(t, [&](int j, const GridRow& row) {
+      for (size_t i = 0; i < row.count; ++i) out[fixedU ? size_t(j) : i] = Eigen::Vector3d(row.at(0, 0)[i], row.at(0, 1)[i], row.at(0, 2)[i]);
+    });
+  } catch (const Error&) {
+    // A partial not finite on the border (the rows carry them): its points one by one, a
+    // point that is not finite left to the topology to refuse, as before.
+    for (size_t k = 0; k < ts.size(); ++k) out[k] = fixedU ? evalPoint(s, at, ts[k]) : evalPoint(s, ts[k], at);
+  }
+  return out;
+}
+
 }  // namespace
 
 // Area and (1/3) ∫ X · (X_u × X_v) of one solved surface, tabulated at the Gauss nodes.
@@ -54,7 +106,9 @@ FaceMeasure faceMeasure(const SeparableSurface& s) {
       v += uw[i] * vw[size_t(j)] * vec(0).dot(n);
     }
   });
-  return {a, v / 3};
+  FaceMeasure out{a, v / 3};
+  measureBorders(s, &out);
+  return out;
 }
 
 SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sceneSize, const std::vector<FaceMeasure>* measures) {
@@ -66,23 +120,12 @@ SolvedTopology solvedTopology(const std::vector<SolvedPatch>& solved, double sce
     f.name = sp.patch->name;
     f.u0 = s.u0, f.u1 = s.u1, f.v0 = s.v0, f.v1 = s.v1;
     f.eval = [&s](double u, double v, int du, int dv) { return evalPoint(s, u, v, du, dv); };
-    // Closed in v: both u-borders and the middle meet themselves across v0 = v1.
-    f.closedV = true;
-    for (double u : {s.u0, (s.u0 + s.u1) / 2, s.u1}) f.closedV = f.closedV && (evalPoint(s, u, s.v0) - evalPoint(s, u, s.v1)).norm() <= tol;
-    // A collapsed border: its points one (a fill's centre, a cone's apex).
-    for (int b = 0; b < 4; ++b) {
-      double spread = 0;
-      Eigen::Vector3d first;
-      for (int k = 0; k <= 8; ++k) {
-        const double t = k / 8.0;
-        const double u = b == 0 ? s.u0 : b == 1 ? s.u1 : s.u0 + (s.u1 - s.u0) * t, v = b == 2 ? s.v0 : b == 3 ? s.v1 : s.v0 + (s.v1 - s.v0) * t;
-        const Eigen::Vector3d x = evalPoint(s, u, v);
-        if (k == 0) first = x;
-        spread = std::max(spread, (x - first).norm());
-      }
-      f.degenerate[b] = spread <= tol;
-    }
+    f.borderPoints = [&s](int b, const std::vector<double>& ts) { return borderPointsOf(s, b, ts); };
     const FaceMeasure m = measures ? (*measures)[faces.size()] : faceMeasure(s);
+    // Closed in v: both u-borders and the middle meet themselves across v0 = v1.
+    f.closedV = m.seamGap <= tol;
+    // A collapsed border: its points one (a fill's centre, a cone's apex).
+    for (int b = 0; b < 4; ++b) f.degenerate[b] = m.borderSpread[b] <= tol;
     f.area = m.area, f.signedVolume = m.signedVolume;
     faces.push_back(std::move(f));
   }

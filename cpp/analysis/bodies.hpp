@@ -24,8 +24,12 @@ struct Body {
 // they are within 1e-8 of it. Area and volume: Gauss-Legendre, 4 points a cell, cells cut at the
 // surfaces' creases (a fill's corners) and graded towards u = 0 (a lift's decay).
 // measures: each patch's faceMeasure when known (a report session keeps them per surface).
+// With them, what the topology asks of a face's borders, kept as distances so that a report
+// session can keep them while the scene's size (the tolerance) changes.
 struct FaceMeasure {
   double area = 0, signedVolume = 0;  // ∫ |X_u × X_v|, (1/3) ∫ X · (X_u × X_v)
+  double seamGap = 0;                 // the largest |X(u, v0) - X(u, v1)| at u0, the middle and u1
+  double borderSpread[4] = {0, 0, 0, 0};  // u0, u1, v0, v1: the farthest of 9 points from the first
 };
 FaceMeasure faceMeasure(const SeparableSurface& s);
 std::vector<Body> measureBodies(const std::vector<SolvedPatch>& solved, double sceneSize,

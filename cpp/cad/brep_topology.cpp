@@ -100,6 +100,15 @@ class Builder {
     return s.eval(u, v, 0, 0);
   }
 
+  // The points of border b at ts: at once where the face can, else one by one.
+  std::vector<Eigen::Vector3d> atMany(int f, int b, const std::vector<double>& ts) const {
+    const TopologyFace& s = faces_[size_t(f)];
+    if (s.borderPoints) return s.borderPoints(b, ts);
+    std::vector<Eigen::Vector3d> out;
+    for (double t : ts) out.push_back(at(f, b, t));
+    return out;
+  }
+
   void makeSegments() {
     first_.assign(faces_.size() * 4, -1);
     count_.assign(faces_.size() * 4, 0);
@@ -108,11 +117,18 @@ class Builder {
         if (!usable(int(f), b)) continue;
         const std::vector<double>& list = breaks(int(f), b);
         first_[f * 4 + b] = int(segments_.size());
+        // The breaks and the pieces' middles, [t0, mid, t1, mid, …, t_last].
+        std::vector<double> ts;
+        for (size_t k = 0; k < list.size(); ++k) {
+          ts.push_back(list[k]);
+          if (k + 1 < list.size()) ts.push_back((list[k] + list[k + 1]) / 2);
+        }
+        const std::vector<Eigen::Vector3d> x = atMany(int(f), b, ts);
         for (size_t k = 0; k + 1 < list.size(); ++k) {
           Segment s;
           s.face = int(f), s.border = b, s.t0 = list[k], s.t1 = list[k + 1];
-          s.p0 = at(s.face, b, s.t0), s.p1 = at(s.face, b, s.t1);
-          const Eigen::Vector3d mid = at(s.face, b, (s.t0 + s.t1) / 2);
+          s.p0 = x[2 * k], s.p1 = x[2 * k + 2];
+          const Eigen::Vector3d& mid = x[2 * k + 1];
           s.zero = (mid - s.p0).norm() + (s.p1 - mid).norm() <= tol_;
           segments_.push_back(s);
           ++count_[f * 4 + b];
@@ -146,10 +162,10 @@ class Builder {
       Segment &a = segments_[size_t(A[k])], &b = segments_[size_t(B[k])];
       if (a.partner >= 0 || b.partner >= 0) return refuse(j, "a border met by more than one face there (not a manifold)");
       double gap = 0;
-      for (int q = 0; q <= 8; ++q) {
-        const double t = a.t0 + (a.t1 - a.t0) * q / 8;
-        gap = std::max(gap, (at(a.face, a.border, t) - at(b.face, b.border, mapAtoB(j, t))).norm());
-      }
+      std::vector<double> ta, tb;
+      for (int q = 0; q <= 8; ++q) ta.push_back(a.t0 + (a.t1 - a.t0) * q / 8), tb.push_back(mapAtoB(j, ta.back()));
+      const std::vector<Eigen::Vector3d> xa = atMany(a.face, a.border, ta), xb = atMany(b.face, b.border, tb);
+      for (int q = 0; q <= 8; ++q) gap = std::max(gap, (xa[size_t(q)] - xb[size_t(q)]).norm());
       if (!(gap <= 2 * tol_)) {
         char why[160];
         std::snprintf(why, sizeof why, "the two faces' borders are %.3g apart, beyond twice the tolerance %.3g", gap, tol_);

@@ -20,6 +20,9 @@ struct TopologyFace {
   bool closedV = false;
   bool degenerate[4] = {false, false, false, false};
   std::function<Eigen::Vector3d(double u, double v, int du, int dv)> eval;
+  // Optional: the points of border b (0: u0, 1: u1, 2: v0, 3: v1) at the parameters ts along
+  // it, all at once (a solved surface tabulates its border line once instead of point by point).
+  std::function<std::vector<Eigen::Vector3d>(int b, const std::vector<double>& ts)> borderPoints;
   const BSplineSurface* spline = nullptr;
   std::vector<double> uCells, vCells;  // sorted breaks, ends included
   // Given when already known (a caller that integrates faster): faceArea and faceSignedVolume

@@ -31,6 +31,8 @@ Tabulation tabulateAt(const SeparableSurface& s, std::vector<double> us, std::ve
   // A single line (one u or one v) is a grid too: an edge's samples tabulate only their edge.
   if (us.empty() || vs.empty() || us.size() > size_t(kMaxGrid) + 1 || vs.size() > size_t(kMaxGrid) + 1)
     checkGrid(int(us.size()) - 1, int(vs.size()) - 1);
+  // The rows always combine the first partials (combine_rows.hpp): order 0 would read past them.
+  if (maxDerivative < 1 || maxDerivative > 2) throw Error(ErrorCode::Internal, "tabulateAt: maxDerivative " + std::to_string(maxDerivative) + " (1 or 2)");
   Tabulation t;
   const int D = maxDerivative + 1;
   t.depth = D;

@@ -18,6 +18,8 @@
 #include "cad/step_writer.hpp"
 #include "cad/scene_fit.hpp"
 #include "scene/scene.hpp"
+#include "surface/tabulation.hpp"
+#include "common/errors.hpp"
 #include "random_holes.hpp"
 #include "test_util.hpp"
 
@@ -286,4 +288,66 @@ TEST_CASE("random holes and random capped tubes: the topology the model implies,
     CHECK(std::abs(cb[0].volume - t.shells[0].volume) <= 1e-4 * cb[0].volume);
     CHECK(std::abs(cb[0].volume - frustum) <= 0.3 * frustum);
   }
+}
+
+TEST_CASE("bodies' faces: border points tabulated a line at once and the border figures equal point-by-point evaluation") {
+  // solvedTopology hands the topology each border's points from one tabulation and keeps each
+  // face's seam gap and border spreads from a 9 × 9 tabulation: against evalPoint, random
+  // parameters along every border of every patch of six examples.
+  std::mt19937 rng(4112);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int checks = 0;
+  for (const char* file : {"you2004-fig8d.json", "bottle-solid.json", "you2004-fig4a.json", "ref-sphere-fillet.json", "you2004-fig8c.json",
+                           "fill-four-strips.json"}) {
+    CAPTURE(file);
+    const Scene scene = parseScene(readText(examplePath(file)));
+    const auto solved = solveScene(scene);
+    const SolvedTopology st = solvedTopology(solved, sceneSizeOf(solved));
+    for (size_t f = 0; f < solved.size(); ++f) {
+      const SeparableSurface& s = solved[f].surface;
+      const TopologyFace& face = st.faces[f];
+      CAPTURE(face.name);
+      REQUIRE(face.borderPoints);
+      const double size = std::max(1.0, evalPoint(s, s.u0, s.v0).norm());
+      for (int b = 0; b < 4; ++b) {
+        const double lo = b < 2 ? s.v0 : s.u0, hi = b < 2 ? s.v1 : s.u1;
+        std::vector<double> ts = {lo, hi};
+        for (int k = 0; k < 7; ++k) ts.push_back(lo + (hi - lo) * unit(rng));
+        const std::vector<Eigen::Vector3d> x = face.borderPoints(b, ts);
+        REQUIRE(x.size() == ts.size());
+        for (size_t k = 0; k < ts.size(); ++k) {
+          const double u = b == 0 ? s.u0 : b == 1 ? s.u1 : ts[k], v = b == 2 ? s.v0 : b == 3 ? s.v1 : ts[k];
+          CHECK((x[k] - evalPoint(s, u, v)).norm() <= 1e-12 * size);
+          ++checks;
+        }
+      }
+      // The figures the bodies' verdicts read, against the same figures point by point.
+      const FaceMeasure m = faceMeasure(s);
+      double gap = 0;
+      for (double u : {s.u0, s.u0 + (s.u1 - s.u0) * 4 / 8, s.u1}) gap = std::max(gap, (evalPoint(s, u, s.v0) - evalPoint(s, u, s.v1)).norm());
+      CHECK(std::abs(m.seamGap - gap) <= 1e-12 * size);
+      for (int b = 0; b < 4; ++b) {
+        double spread = 0;
+        Eigen::Vector3d first;
+        for (int k = 0; k <= 8; ++k) {
+          const double u = b == 0 ? s.u0 : b == 1 ? s.u1 : s.u0 + (s.u1 - s.u0) * k / 8, v = b == 2 ? s.v0 : b == 3 ? s.v1 : s.v0 + (s.v1 - s.v0) * k / 8;
+          const Eigen::Vector3d x = evalPoint(s, u, v);
+          if (k == 0) first = x;
+          spread = std::max(spread, (x - first).norm());
+        }
+        CHECK(std::abs(m.borderSpread[b] - spread) <= 1e-12 * size);
+        ++checks;
+      }
+    }
+  }
+  MESSAGE(checks << " border checks");
+}
+
+TEST_CASE("tabulateAt refuses derivative orders its rows cannot combine") {
+  const Scene scene = parseScene(readText(examplePath("you2004-fig4a.json")));
+  const auto solved = solveScene(scene);
+  const SeparableSurface& s = solved.front().surface;
+  CHECK_THROWS_AS(tabulateAt(s, {s.u0}, {s.v0}, 0), Error);
+  CHECK_THROWS_AS(tabulateAt(s, {s.u0}, {s.v0}, 3), Error);
+  CHECK_NOTHROW(tabulateAt(s, {s.u0}, {s.v0}, 1));
 }
