@@ -202,15 +202,16 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
   }
 
   // The join report of a drawn solve (the worker certifies after drawing).
-  function applyReport(report, job, ms) {
+  function applyReport(report, job, ms, timing = {}) {
     if (job !== drawnJob) {
-      earlyReport = { report, job, ms };
+      earlyReport = { report, job, ms, timing };
       return;
     }
     hooks.reportPending = false;
     hooks.reportCount = (hooks.reportCount ?? 0) + 1;
-    // For the tests: when it came (after its solve was drawn) and the worker's time for it.
-    hooks.lastReport = { ms, solveCount: hooks.solveCount, at: performance.now(), requestedAt: job.requestedAt };
+    // For the tests: when it came (after its solve was drawn), the worker's time for it and the
+    // longest it held the worker at once (what an edit may wait behind it).
+    hooks.lastReport = { ms, longestSliceMs: timing.longestSliceMs, solveCount: hooks.solveCount, at: performance.now(), requestedAt: job.requestedAt };
     doc.emit('certified', report, job);
   }
 
@@ -273,7 +274,7 @@ export function createSceneSession({ doc, solver, relay, viewer, panel, gallery,
     hooks.reportPending = Boolean(result.reportPending);
     hooks.lastDrawnAt = performance.now();
     doc.emit('drawn', result, job);
-    if (earlyReport?.job === job) applyReport(earlyReport.report, job, earlyReport.ms);
+    if (earlyReport?.job === job) applyReport(earlyReport.report, job, earlyReport.ms, earlyReport.timing);
     earlyReport = null;
     panel.showSolved(result.patches);
     hooks.lastError = null;

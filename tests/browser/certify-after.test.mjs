@@ -114,8 +114,11 @@ describe('certified after drawing', { skip }, () => {
       await page.waitForFunction((count) => window.__pdesurf.lastReport?.solveCount === window.__pdesurf.solveCount && window.__pdesurf.solveCount > count, n, { timeout: 30_000 });
       const t = await page.evaluate(() => ({ drawnAt: window.__pdesurf.lastDrawnAt, solve: window.__pdesurf.lastSolve, report: window.__pdesurf.lastReport, a: window.__pdesurf.analysis() }));
       console.log(`# aeroplane wing_x (${viewport.width}): drawn ${t.solve.pageMs.toFixed(0)} ms after the edit (worker ${t.solve.workerMs.toFixed(0)} ms), ` +
-        `certified ${(t.report.at - t.report.requestedAt).toFixed(0)} ms after it (worker ${t.report.ms.toFixed(0)} ms)`);
+        `certified ${(t.report.at - t.report.requestedAt).toFixed(0)} ms after it (worker ${t.report.ms.toFixed(0)} ms, ` +
+        `at most ${t.report.longestSliceMs.toFixed(0)} ms at once)`);
       assert.ok(t.report.at > t.drawnAt, 'the report came before the surface was drawn');
+      // Measured in slices: the longest is part of the whole (a report in one piece would equal it).
+      assert.ok(t.report.longestSliceMs > 0 && t.report.longestSliceMs < t.report.ms, JSON.stringify(t.report));
       assert.ok(t.a.checkingShown > before, 'the Joins folder never said "checking…"');
       assert.equal(t.a.reportStale, false);
       assert.equal(t.a.joinsTitle, 'Joins');

@@ -4,7 +4,7 @@
 //
 // createSolverClient({ onResult(result, job, ms), onError(error, job), onBusy(ms | null),
 //                      onReport(report, job, ms) })
-//   onReport: the join report of the result last given to onResult, when its job asked for
+//   onReport: (report, job, ms, { longestSliceMs }) the join report of the result last given to onResult, when its job asked for
 //             it (options.joins): that result came without it (result.reportPending) and the
 //             worker certifies after drawing; a newer solve drops it. A report that failed
 //             comes as { error: { code, message } }.
@@ -168,7 +168,7 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, onRep
   }
 
   function reported(msg) {
-    if (delivered.job.token === latestToken) onReport(msg.ok ? msg.result : { error: msg.error }, delivered.job, msg.ms);
+    if (delivered.job.token === latestToken) onReport(msg.ok ? msg.result : { error: msg.error }, delivered.job, msg.ms, { longestSliceMs: msg.longestSliceMs });
   }
 
   // A cold start's first scene, solved unasked. Kept for the first request; or the answer to

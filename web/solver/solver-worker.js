@@ -19,8 +19,9 @@
 // A solve that asks for the join report (options.joins) is answered without it (result.
 // reportPending: true) as soon as its mesh is made; the report follows, measured in slices of
 // REPORT_SLICE_MS between which any message that arrived runs first:
-//   out: { id, kind: 'report', ok: true, result: report, ms, measured, kept } (id 'ahead' for
-//        the solve done ahead), or the same failure as a solve
+//   out: { id, kind: 'report', ok: true, result: report, ms, measured, kept, longestSliceMs }
+//        (id 'ahead' for the solve done ahead; longestSliceMs: the longest the report held the
+//        worker at once, what an edit may wait behind it), or the same failure as a solve
 // A new solve drops the report in progress (it is of an older scene); any other request (an
 // export), or a solve that fails, pauses it: it starts again after, keeping the parts already
 // measured.
@@ -122,19 +123,21 @@ function nextTask(fn) {
   yieldChannel.port2.postMessage(0);
 }
 function certifyAfter(solver, id, options) {
-  const job = { id, options, started: performance.now() };
+  const job = { id, options, started: performance.now(), longestSliceMs: 0 };
   reporting = job;
   const slice = (first) => {
     if (reporting !== job) return; // a newer solve made it stale, or a request paused it
+    const sliceStart = performance.now();
     try {
       if (first) solver.reportBegin({ crossings: Boolean(options?.crossings) });
       const r = solver.reportStep(REPORT_SLICE_MS);
+      job.longestSliceMs = Math.max(job.longestSliceMs, performance.now() - sliceStart);
       if (!r.done) {
         nextTask(() => slice(false));
         return;
       }
       reporting = null;
-      self.postMessage({ id, kind: 'report', ok: true, result: r.report, ms: performance.now() - job.started, measured: r.measured, kept: r.kept });
+      self.postMessage({ id, kind: 'report', ok: true, result: r.report, ms: performance.now() - job.started, measured: r.measured, kept: r.kept, longestSliceMs: job.longestSliceMs });
     } catch (err) {
       reporting = null;
       self.postMessage({ id, kind: 'report', ok: false, error: { code: String(err?.code || 'Internal'), message: String(err?.message || err) } });
