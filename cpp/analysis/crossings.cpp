@@ -89,33 +89,27 @@ struct Meshes {
   double edgeSum = 0.0;
 };
 
-Meshes meshesOf(const std::vector<SolvedPatch>& solved, int grid, double tol) {
-  const int P = static_cast<int>(solved.size());
-  Meshes m;
-  m.grids.resize(P);
-  m.tris.reserve(static_cast<size_t>(P) * 2 * grid * grid);
-  for (int p = 0; p < P; ++p) {
-    const SeparableSurface& s = solved[p].surface;
-    const GridSamples g = sampleGrid(s, grid, grid);
-    auto at = [&](int i, int j) { return Eigen::Vector3d(&g.X[3 * (static_cast<size_t>(j) * (grid + 1) + i)]); };
-    PatchGrid& pg = m.grids[p];
-    pg = {solved[p].patch, s.u0, s.u1, s.v0, s.v1};
-    pg.closedU = pg.closedV = true;
-    for (int k = 0; k <= grid; ++k) {
-      pg.closedV = pg.closedV && (at(k, 0) - at(k, grid)).norm() <= tol;
-      pg.closedU = pg.closedU && (at(0, k) - at(grid, k)).norm() <= tol;
-    }
-    for (int j = 0; j < grid; ++j)
-      for (int i = 0; i < grid; ++i) {
-        const Eigen::Vector3d a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-        for (const auto& t3 : {std::array<Eigen::Vector3d, 3>{a, b, c}, std::array<Eigen::Vector3d, 3>{a, c, d}}) {
-          Tri t{p, i, j, t3[0], t3[1], t3[2], t3[0].cwiseMin(t3[1]).cwiseMin(t3[2]), t3[0].cwiseMax(t3[1]).cwiseMax(t3[2])};
-          m.edgeSum += (t.hi - t.lo).norm();
-          m.tris.push_back(t);
-        }
-      }
+// Patch p's grid × grid mesh into m (m.grids sized for every patch).
+void addMesh(Meshes& m, const std::vector<SolvedPatch>& solved, int p, int grid, double tol) {
+  const SeparableSurface& s = solved[p].surface;
+  const GridSamples g = sampleGrid(s, grid, grid);
+  auto at = [&](int i, int j) { return Eigen::Vector3d(&g.X[3 * (static_cast<size_t>(j) * (grid + 1) + i)]); };
+  PatchGrid& pg = m.grids[p];
+  pg = {solved[p].patch, s.u0, s.u1, s.v0, s.v1};
+  pg.closedU = pg.closedV = true;
+  for (int k = 0; k <= grid; ++k) {
+    pg.closedV = pg.closedV && (at(k, 0) - at(k, grid)).norm() <= tol;
+    pg.closedU = pg.closedU && (at(0, k) - at(grid, k)).norm() <= tol;
   }
-  return m;
+  for (int j = 0; j < grid; ++j)
+    for (int i = 0; i < grid; ++i) {
+      const Eigen::Vector3d a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      for (const auto& t3 : {std::array<Eigen::Vector3d, 3>{a, b, c}, std::array<Eigen::Vector3d, 3>{a, c, d}}) {
+        Tri t{p, i, j, t3[0], t3[1], t3[2], t3[0].cwiseMin(t3[1]).cwiseMin(t3[2]), t3[0].cwiseMax(t3[1]).cwiseMax(t3[2])};
+        m.edgeSum += (t.hi - t.lo).norm();
+        m.tris.push_back(t);
+      }
+    }
 }
 
 // Triangles of a uniform spatial hash's cells (about twice a triangle's size), and the pairs
@@ -128,17 +122,12 @@ struct Hash {
   int cellOf(double x) const { return static_cast<int>(std::floor(x / h)); }
 };
 
-Hash hashOf(const Meshes& m, double size) {
-  Hash hash;
-  hash.h = std::max(2.0 * m.edgeSum / std::max<size_t>(1, m.tris.size()), 1e-12 * size);
-  for (int k = 0; k < static_cast<int>(m.tris.size()); ++k) {
-    const Tri& t = m.tris[k];
-    for (int x = hash.cellOf(t.lo.x()); x <= hash.cellOf(t.hi.x()); ++x)
-      for (int y = hash.cellOf(t.lo.y()); y <= hash.cellOf(t.hi.y()); ++y)
-        for (int z = hash.cellOf(t.lo.z()); z <= hash.cellOf(t.hi.z()); ++z) hash.buckets[Hash::key(x, y, z)].push_back(k);
-  }
-  for (const auto& [key, b] : hash.buckets) hash.pairs += double(b.size()) * (double(b.size()) - 1) / 2;
-  return hash;
+// Triangle k into the hash's cells (hash.h set).
+void hashTriangle(Hash& hash, const Meshes& m, int k) {
+  const Tri& t = m.tris[k];
+  for (int x = hash.cellOf(t.lo.x()); x <= hash.cellOf(t.hi.x()); ++x)
+    for (int y = hash.cellOf(t.lo.y()); y <= hash.cellOf(t.hi.y()); ++y)
+      for (int z = hash.cellOf(t.lo.z()); z <= hash.cellOf(t.hi.z()); ++z) hash.buckets[Hash::key(x, y, z)].push_back(k);
 }
 
 // The densest cell's first two patches, for the error when the pairs stay over the limit.
@@ -165,30 +154,84 @@ bool sameTriangle(const Tri& x, const Tri& y, double tol) {
 
 }  // namespace
 
-std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
-  const int P = static_cast<int>(solved.size());
-  const double tol = 1e-9 * size;
-  // Bounded before the work: at most kCrossingGrid cells a side, kCrossingTriangles in all
-  // (the aeroplane at 256² held 2.9 M triangles, 608 MB), then made coarser while the hash's pairs
-  // exceed kCrossingPairs (patches lying on each other put every triangle in a few cells).
-  grid = std::min({grid, kCrossingGrid, std::max(kMinCrossingGrid, static_cast<int>(std::sqrt(double(kCrossingTriangles) / (2.0 * std::max(1, P)))))});
-  Meshes meshes = meshesOf(solved, grid, tol);
-  Hash hash = hashOf(meshes, size);
-  while (hash.pairs > double(kCrossingPairs)) {
-    if (grid <= kMinCrossingGrid)
-      throw Error(ErrorCode::TooLarge, "the crossing test would compare " + numberText(hash.pairs) + " triangle pairs on a " + std::to_string(grid) + "x" +
-                                           std::to_string(grid) + " mesh per patch, over the limit " + numberText(double(kCrossingPairs)) +
-                                           ": patches lie on one another (" + densestPair(meshes, hash, solved) + ")");
-    // Pairs grow as the grid's square: a grid that should bring them under the limit.
-    grid = std::max(kMinCrossingGrid, std::min(grid - 1, static_cast<int>(0.9 * grid * std::sqrt(double(kCrossingPairs) / hash.pairs))));
-    meshes = meshesOf(solved, grid, tol);
-    hash = hashOf(meshes, size);
+// The search's state between steps: the meshes patch by patch, the hash block by block, then
+// the triangles' pairs block by block.
+struct CrossingSearch::State {
+  enum class Stage { Mesh, Hash, Pairs, Done };
+  const std::vector<SolvedPatch>& solved;
+  int P, grid;
+  double size, tol;
+  Stage stage = Stage::Mesh;
+  int next = 0;  // the next patch (Mesh) or triangle (Hash, Pairs)
+  Meshes meshes;
+  Hash hash;
+  std::vector<int> stamp;
+  std::vector<Crossing> found;
+  std::unordered_map<int64_t, size_t> foundAt;  // (patch, other) -> its entry in found
+
+  State(const std::vector<SolvedPatch>& s, double sceneSize, int askedGrid)
+      : solved(s), P(static_cast<int>(s.size())), size(sceneSize), tol(1e-9 * sceneSize) {
+    // Bounded before the work: at most kCrossingGrid cells a side, kCrossingTriangles in all
+    // (the aeroplane at 256² held 2.9 M triangles, 608 MB), then made coarser while the hash's
+    // pairs exceed kCrossingPairs (patches lying on each other put every triangle in a few cells).
+    grid = std::min({askedGrid, kCrossingGrid, std::max(kMinCrossingGrid, static_cast<int>(std::sqrt(double(kCrossingTriangles) / (2.0 * std::max(1, P)))))});
+    startMeshes();
   }
-  const std::vector<PatchGrid>& grids = meshes.grids;
-  const std::vector<Tri>& tris = meshes.tris;
+
+  void startMeshes() {
+    meshes = Meshes{};
+    meshes.grids.resize(size_t(P));
+    meshes.tris.reserve(static_cast<size_t>(P) * 2 * grid * grid);
+    stage = Stage::Mesh, next = 0;
+  }
+
+  // A block of triangles a step: about a millisecond natively for the pairs.
+  static constexpr int kBlock = 4096;
+
+  bool step() {
+    switch (stage) {
+      case Stage::Mesh:
+        if (next < P) addMesh(meshes, solved, next++, grid, tol);
+        if (next == P) {
+          hash = Hash{};
+          hash.h = std::max(2.0 * meshes.edgeSum / std::max<size_t>(1, meshes.tris.size()), 1e-12 * size);
+          stage = Stage::Hash, next = 0;
+        }
+        return false;
+      case Stage::Hash: {
+        const int n = static_cast<int>(meshes.tris.size()), to = std::min(n, next + kBlock);
+        for (; next < to; ++next) hashTriangle(hash, meshes, next);
+        if (next < n) return false;
+        for (const auto& [key, b] : hash.buckets) hash.pairs += double(b.size()) * (double(b.size()) - 1) / 2;
+        if (hash.pairs > double(kCrossingPairs)) {
+          if (grid <= kMinCrossingGrid)
+            throw Error(ErrorCode::TooLarge, "the crossing test would compare " + numberText(hash.pairs) + " triangle pairs on a " + std::to_string(grid) + "x" +
+                                                 std::to_string(grid) + " mesh per patch, over the limit " + numberText(double(kCrossingPairs)) +
+                                                 ": patches lie on one another (" + densestPair(meshes, hash, solved) + ")");
+          // Pairs grow as the grid's square: a grid that should bring them under the limit.
+          grid = std::max(kMinCrossingGrid, std::min(grid - 1, static_cast<int>(0.9 * grid * std::sqrt(double(kCrossingPairs) / hash.pairs))));
+          startMeshes();
+          return false;
+        }
+        stamp.assign(meshes.tris.size(), -1);
+        stage = Stage::Pairs, next = 0;
+        return false;
+      }
+      case Stage::Pairs: {
+        const int n = static_cast<int>(meshes.tris.size()), to = std::min(n, next + kBlock);
+        for (; next < to; ++next) pairsOf(next);
+        if (next < n) return false;
+        stage = Stage::Done;
+        return true;
+      }
+      case Stage::Done: return true;
+    }
+    return true;
+  }
+
   // Whether triangle t of patch p lies in the cell row along a join with patch q (a pair
   // may share several joins: both ends of a blend on one surface).
-  auto skipped = [&](const Tri& t, int q) {
+  bool skipped(const Tri& t, int q) const {
     const Patch& pp = *solved[t.patch].patch;
     const Patch& qq = *solved[q].patch;
     if (qq.kind == PatchKind::Primary)
@@ -198,16 +241,12 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
       for (const Meets& m : pp.meets)
         if (m.patch == qq.name && t.i == (m.atT1 ? grid - 1 : 0)) return true;
     return false;
-  };
-  const auto& buckets = hash.buckets;
-  auto key = Hash::key;
-  auto cellOf = [&](double x) { return hash.cellOf(x); };
-  std::vector<Crossing> found;
-  std::unordered_map<int64_t, size_t> foundAt;  // (patch, other) -> its entry in found
-  auto record = [&](const Tri& x, const Tri& y) {
+  }
+
+  void record(const Tri& x, const Tri& y) {
     const Tri& a = solved[x.patch].patch->kind == PatchKind::Primary ? y : x;  // name the blend first
     const Tri& b = &a == &x ? y : x;
-    const PatchGrid &ga = grids[a.patch], &gb = grids[b.patch];
+    const PatchGrid &ga = meshes.grids[a.patch], &gb = meshes.grids[b.patch];
     auto range = [&](double lo, double hi, int cell) {
       return std::array<double, 2>{lo + (hi - lo) * cell / grid, lo + (hi - lo) * (cell + 1) / grid};
     };
@@ -222,16 +261,18 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
     }
     found.push_back({ga.patch->name, gb.patch->name, range(ga.u0, ga.u1, a.i), range(ga.v0, ga.v1, a.j), range(gb.u0, gb.u1, b.i),
                      range(gb.v0, gb.v1, b.j), 1});
-  };
-  std::vector<int> stamp(tris.size(), -1);
-  for (int k = 0; k < static_cast<int>(tris.size()); ++k) {
+  }
+
+  // Triangle k against the later triangles in its hash cells.
+  void pairsOf(int k) {
+    const std::vector<Tri>& tris = meshes.tris;
     const Tri& t = tris[k];
     const bool primaryK = solved[t.patch].patch->kind == PatchKind::Primary;
-    for (int x = cellOf(t.lo.x()); x <= cellOf(t.hi.x()); ++x)
-      for (int y = cellOf(t.lo.y()); y <= cellOf(t.hi.y()); ++y)
-        for (int z = cellOf(t.lo.z()); z <= cellOf(t.hi.z()); ++z) {
-          auto it = buckets.find(key(x, y, z));
-          if (it == buckets.end()) continue;
+    for (int x = hash.cellOf(t.lo.x()); x <= hash.cellOf(t.hi.x()); ++x)
+      for (int y = hash.cellOf(t.lo.y()); y <= hash.cellOf(t.hi.y()); ++y)
+        for (int z = hash.cellOf(t.lo.z()); z <= hash.cellOf(t.hi.z()); ++z) {
+          auto it = hash.buckets.find(Hash::key(x, y, z));
+          if (it == hash.buckets.end()) continue;
           for (int o : it->second) {
             if (o <= k || stamp[o] == k) continue;
             stamp[o] = k;
@@ -239,7 +280,7 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
             if (primaryK && solved[u.patch].patch->kind == PatchKind::Primary) continue;  // only blends are certified
             if (((t.lo - u.hi).array() > 0).any() || ((u.lo - t.hi).array() > 0).any()) continue;
             if (t.patch == u.patch) {
-              const PatchGrid& g = grids[t.patch];
+              const PatchGrid& g = meshes.grids[t.patch];
               if (cellDistance(t.i, u.i, grid, g.closedU) <= 1 && cellDistance(t.j, u.j, grid, g.closedV) <= 1) continue;
             } else if (skipped(t, u.patch) || skipped(u, t.patch)) {
               continue;
@@ -254,7 +295,19 @@ std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, doub
           }
         }
   }
-  return found;
+};
+
+CrossingSearch::CrossingSearch(const std::vector<SolvedPatch>& solved, double sceneSize, int grid)
+    : state_(std::make_unique<State>(solved, sceneSize, grid)) {}
+CrossingSearch::~CrossingSearch() = default;
+bool CrossingSearch::step() { return state_->step(); }
+const std::vector<Crossing>& CrossingSearch::found() const { return state_->found; }
+
+std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double size, int grid) {
+  CrossingSearch search(solved, size, grid);
+  while (!search.step()) {
+  }
+  return search.found();
 }
 
 }  // namespace pdesurf

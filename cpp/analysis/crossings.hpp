@@ -5,6 +5,7 @@
 // position (seams, poles, joins on a common grid) and the cell rows along a declared join.
 #pragma once
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,20 @@ constexpr size_t kCrossingTriangles = size_t{1} << 18;
 constexpr size_t kCrossingPairs = size_t{1} << 27;
 constexpr int kMinCrossingGrid = 16;
 std::vector<Crossing> findCrossings(const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
+
+// The same search in steps of about a millisecond or less natively (a patch's mesh, a block of
+// the hash or of the triangles' pairs), for the page's report, which stops between them when
+// an edit comes. `solved` must outlive it. step() throws findCrossings's errors.
+class CrossingSearch {
+ public:
+  CrossingSearch(const std::vector<SolvedPatch>& solved, double sceneSize, int grid);
+  ~CrossingSearch();
+  bool step();  // true once the search is done: then found() is the result
+  const std::vector<Crossing>& found() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace pdesurf

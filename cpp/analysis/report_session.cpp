@@ -22,6 +22,7 @@ void ReportSession::begin(const Scene& scene, const std::vector<SolvedPatch>& so
   solved_ = &solved;
   crossingGrid_ = crossingGrid;
   next_ = measured_ = kept_ = 0;
+  crossing_.reset();
   report_ = SceneReport{};
   bodies_.clear();
   // Versions: a patch keeps its version while its surface is exactly the same.
@@ -121,6 +122,12 @@ bool ReportSession::step() {
     Kept k;
     k.key = key;
     const std::vector<SolvedPatch>& s = *solved_;
+    if (p.kind == Kind::Crossings) {  // in steps of its own: a whole search held the worker ~200 ms
+      if (!crossing_) crossing_ = std::make_unique<CrossingSearch>(s, report_.sceneSize, crossingGrid_);
+      if (!crossing_->step()) return false;
+      k.crossings = crossing_->found();
+      crossing_.reset();
+    }
     switch (p.kind) {
       case Kind::Join: k.join = certifyJoin(*scene_, s, p.patch, p.meets); break;
       case Kind::Seam:
@@ -129,7 +136,7 @@ bool ReportSession::step() {
       case Kind::Centre: k.centre = measureFillCentre(s[p.patch].patch->name, s[p.patch].surface); break;
       case Kind::Face: k.face = faceMeasure(s[p.patch].surface); break;
       case Kind::Bodies: k.bodies = measureBodies(s, report_.sceneSize, &faces_); break;
-      case Kind::Crossings: k.crossings = findCrossings(s, report_.sceneSize, crossingGrid_); break;
+      case Kind::Crossings: break;  // above
     }
     kept_parts_[name] = k;
     place(p, k);

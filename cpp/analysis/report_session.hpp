@@ -8,10 +8,12 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "analysis/bodies.hpp"
+#include "analysis/crossings.hpp"
 #include "analysis/join_certificate.hpp"
 
 namespace pdesurf {
@@ -21,8 +23,8 @@ class ReportSession {
   // Starts the report of `solved` (of `scene`): both must outlive the steps up to the next
   // begin. crossingGrid: the crossings' mesh per patch (0: none), as checkScene's.
   void begin(const Scene& scene, const std::vector<SolvedPatch>& solved, int crossingGrid = 0);
-  // Measures the next part not kept from before; true when the report is complete (then
-  // report() is). Throws what the part's measure throws (a declared join that is not one).
+  // Measures the next part not kept from before (the crossings, a step of their search);
+  // true when the report is complete (then report() is). Throws what the part's measure throws (a declared join that is not one).
   bool step();
   size_t partsLeft() const { return parts_.size() - next_; }
   size_t partsMeasured() const { return measured_; }  // in this report, not taken from before
@@ -69,6 +71,7 @@ class ReportSession {
   uint64_t versions_ = 0;
   std::vector<uint64_t> current_;  // each solved patch's version in this report
   std::map<std::string, Kept> kept_parts_;  // by part name
+  std::unique_ptr<CrossingSearch> crossing_;  // the crossings part under way
 };
 
 }  // namespace pdesurf

@@ -78,7 +78,9 @@ TEST_CASE("report session: part by part, the one-off report of every kind of sce
     ReportSession session;
     session.begin(scene, solved, 16);
     const size_t parts = session.partsLeft();
-    CHECK(runAll(session) == int(parts));  // nothing kept on a first report: one part a step
+    // Nothing kept on a first report: one part a step, the crossings in several (each patch's
+    // mesh, then blocks of the hash and of the pairs), so that an edit can come between them.
+    CHECK(runAll(session) >= int(parts) - 1 + int(solved.size()) + 2);
     CHECK(session.partsMeasured() == parts);
     sameAsOneOff(session, scene, solved, 16);
     // The same solve again: every part kept, nothing measured, the same report.
