@@ -8,6 +8,7 @@
 #include "common/text.hpp"
 #include "basis/general_function.hpp"
 #include "common/errors.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 
@@ -31,15 +32,71 @@ void requireFinite(const VExpansion& f, double v) {
 
 }  // namespace
 
-VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor, bool dropNoise) {
-  const double L = v1 - v0, omega = 2 * M_PI / L;
+namespace {
+
+// The trapezoid rule's K + 1 points over one period (both ends), K = max(1024, 16 N).
+std::vector<double> periodGrid(double v0, double v1, int N) {
+  const double L = v1 - v0;
   const int K = std::max(1024, 16 * N);
-  std::vector<double> vs(K + 1), samples(K + 1, 0.0), g(K + 1);
+  std::vector<double> vs(K + 1);
   for (int j = 0; j <= K; ++j) vs[j] = v0 + L * j / K;
-  for (const VTerm& t : f) {  // term by term over all the points (a general one in one program run)
-    t.g.evalMany(vs.data(), vs.size(), 0, g.data());
-    for (int j = 0; j <= K; ++j) samples[j] += t.coef * g[j];
+  return vs;
+}
+
+// Each expansion's samples at vs, term by term in its order; the general terms of all of them
+// by one program over all the points (a general function's values are its program's, so each
+// sample is what evalMany gives).
+std::vector<std::vector<double>> sampleAll(const std::vector<const VExpansion*>& fs, const std::vector<double>& vs) {
+  std::vector<const GeneralFunction*> generals;
+  std::vector<Expr> roots;
+  for (const VExpansion* f : fs)
+    for (const VTerm& t : *f)
+      if (t.g.isGeneral() && std::find(generals.begin(), generals.end(), t.g.general.get()) == generals.end())
+        generals.push_back(t.g.general.get()), roots.push_back(t.g.general->derivativeExpr(0));
+  std::vector<std::vector<double>> values(generals.size(), std::vector<double>(vs.size()));
+  if (!generals.empty()) {
+    std::vector<double*> outs;
+    for (std::vector<double>& v : values) outs.push_back(v.data());
+    ExprProgram(roots).runAll(vs.data(), nullptr, vs.size(), outs.data());
   }
+  std::vector<std::vector<double>> out;
+  std::vector<double> g(vs.size());
+  for (const VExpansion* f : fs) {
+    std::vector<double> samples(vs.size(), 0.0);
+    for (const VTerm& t : *f) {
+      const double* x = g.data();
+      if (t.g.isGeneral()) x = values[size_t(std::find(generals.begin(), generals.end(), t.g.general.get()) - generals.begin())].data();
+      else t.g.evalMany(vs.data(), vs.size(), 0, g.data());
+      for (size_t j = 0; j < vs.size(); ++j) samples[j] += t.coef * x[j];
+    }
+    out.push_back(std::move(samples));
+  }
+  return out;
+}
+
+VExpansion seriesOfSamples(const VExpansion& f, const std::vector<double>& vs, const std::vector<double>& samples, double v0, double v1, int N,
+                           double noiseFloor, bool dropNoise);
+
+}  // namespace
+
+VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor, bool dropNoise) {
+  return fourierSeriesMany({&f}, v0, v1, N, noiseFloor, dropNoise).front();
+}
+
+std::vector<VExpansion> fourierSeriesMany(const std::vector<const VExpansion*>& fs, double v0, double v1, int N, double noiseFloor, bool dropNoise) {
+  const std::vector<double> vs = periodGrid(v0, v1, N);
+  const std::vector<std::vector<double>> samples = sampleAll(fs, vs);
+  std::vector<VExpansion> out;
+  for (size_t k = 0; k < fs.size(); ++k) out.push_back(seriesOfSamples(*fs[k], vs, samples[k], v0, v1, N, noiseFloor, dropNoise));
+  return out;
+}
+
+namespace {
+
+VExpansion seriesOfSamples(const VExpansion& f, const std::vector<double>& vs, const std::vector<double>& samples, double v0, double v1, int N,
+                           double noiseFloor, bool dropNoise) {
+  const double L = v1 - v0, omega = 2 * M_PI / L;
+  const int K = int(vs.size()) - 1;
   for (int j = 0; j <= K; ++j)
     if (!std::isfinite(samples[j])) requireFinite(f, vs[j]);
   // a_k + i b_k = Σ_j w_j f_j e^{ikωv_j} (trapezoid weights) by one FFT: the ends are one
@@ -70,6 +127,8 @@ VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, doubl
   }
   return out;
 }
+
+}  // namespace
 
 namespace {
 

@@ -18,6 +18,11 @@ double expansionValue(const VExpansion& f, double v, int k = 0);
 // rounding of f's samples), are left out: their noise would enter v-derivatives times (kω)^j.
 // The Bloor-Wilson baselines keep every mode, as published.
 VExpansion fourierSeries(const VExpansion& f, double v0, double v1, int N, double noiseFloor = 0.0, bool dropNoise = false);
+// The same for several expansions over one period: their general terms are sampled by one
+// program, so what they share (a fill's loop: its sides' curves, in every slot) runs once.
+// Each result is fourierSeries's for that expansion, to the bit.
+std::vector<VExpansion> fourierSeriesMany(const std::vector<const VExpansion*>& fs, double v0, double v1, int N, double noiseFloor = 0.0,
+                                          bool dropNoise = false);
 
 // The degree-N Chebyshev interpolant of f on [v0, v1] as powers of s = (v - c) w in [-1, 1].
 VExpansion chebyshevInterpolant(const VExpansion& f, double v0, double v1, int N);

@@ -46,6 +46,14 @@ constexpr int kSplineDataMatch = 1;
 PdeProblem modalProblem(const PdeProblem& p, int N, bool loop) {
   PdeProblem q = p;
   static const char* axis[3] = {"x", "y", "z"};
+  // The slots expanded as Fourier series, over every component: sampled together below (a
+  // loop's slots are its sides' curves and their derivatives: one program runs what they share).
+  struct Periodic {
+    int component;
+    VExpansion* slot;
+    VExpansion data;
+  };
+  std::vector<Periodic> periodic;
   for (int k = 0; k < 3; ++k) {
     auto& c = q.component[k];
     const int m = endMatchOrder(c);
@@ -59,19 +67,44 @@ PdeProblem modalProblem(const PdeProblem& p, int N, bool loop) {
           // round leading edge (0.0009° kept exact); a tube's is expanded, or it tears.
           const VExpansion general = generalPart(slot);
           if (general.empty() && (!loop || p.periodicV)) continue;
-          const VExpansion gen = loop ? slot : general;
+          VExpansion gen = loop ? slot : general;
           slot = loop ? VExpansion{} : familyPart(slot);
+          if (loop || isPeriodic(gen, p.v0, p.v1)) {
+            periodic.push_back({k, &slot, std::move(gen)});
+            continue;
+          }
           // Open data from a B-spline border (a NURBS surface's, expr/spline.hpp) are matched
           // at the ends to first order at most, and never by one polynomial of high degree.
           const bool spline = hasSplineData(gen);
-          const VExpansion approx = loop || isPeriodic(gen, p.v0, p.v1) ? fourierSeries(gen, p.v0, p.v1, N, 0.0, true)
-                                    : N <= kMaxOpenDegree && !spline  ? chebyshevInterpolant(gen, p.v0, p.v1, N)
-                                                                      : endMatchedFourier(gen, p.v0, p.v1, N, spline ? std::min(m, kSplineDataMatch) : m);
+          const VExpansion approx = N <= kMaxOpenDegree && !spline ? chebyshevInterpolant(gen, p.v0, p.v1, N)
+                                                                   : endMatchedFourier(gen, p.v0, p.v1, N, spline ? std::min(m, kSplineDataMatch) : m);
           slot.insert(slot.end(), approx.begin(), approx.end());
         }
     } catch (const Error& e) {
       throw Error(e.code(), std::string("component ") + axis[k] + ": " + e.what());
     }
+  }
+  if (!periodic.empty()) {
+    std::vector<const VExpansion*> data;
+    for (const Periodic& d : periodic) data.push_back(&d.data);
+    std::vector<VExpansion> series;
+    try {
+      series = fourierSeriesMany(data, p.v0, p.v1, N, 0.0, true);
+    } catch (const Error& e) {
+      // A sample that is not finite: named by the first slot that has one, with its component.
+      for (const Periodic& d : periodic) {
+        try {
+          fourierSeries(d.data, p.v0, p.v1, N, 0.0, true);
+        } catch (const Error& one) {
+          throw Error(one.code(), std::string("component ") + axis[d.component] + ": " + one.what());
+        }
+      }
+      throw;
+    }
+    for (size_t i = 0; i < periodic.size(); ++i) periodic[i].slot->insert(periodic[i].slot->end(), series[i].begin(), series[i].end());
+  }
+  for (int k = 0; k < 3; ++k) {
+    auto& c = q.component[k];
     for (const GeneralForce& f : c.generalForce) {
       try {
         const auto terms = approximateForce(f, p.v0, p.v1, N);
