@@ -1,5 +1,7 @@
 #include "basis/general_function.hpp"
 
+#include <list>
+
 #include "common/errors.hpp"
 #include "common/text.hpp"
 #include "expr/budget.hpp"
@@ -43,13 +45,43 @@ void GeneralFunction::evalManyUpTo(const double* v, size_t n, int maxK, double* 
   upTo(maxK).runAll(v, nullptr, n, outs);
 }
 
+namespace {
+
+// Programs compiled before, by expression: expressions are interned (expr.cpp), so a function
+// that did not change between two solves of an edited scene is the same node while the last
+// solve holds it (the page's module keeps it for the report) — a slider step parses the whole
+// scene again, and most of its functions (a wing's profile) are as they were. Per thread (the
+// CLI fits on several), the most recent kCompiledKept, each holding its expressions alive so
+// that no other node can take their address.
+struct Compiled {
+  int maxK;
+  std::vector<Expr> derivs;  // derivs[0] is the key
+  std::shared_ptr<const ExprProgram> program;
+};
+constexpr size_t kCompiledKept = 256;
+
+std::list<Compiled>& compiledCache() {
+  thread_local std::list<Compiled> cache;  // most recent first
+  return cache;
+}
+
+}  // namespace
+
 const ExprProgram& GeneralFunction::upTo(int maxK) const {
   if (static_cast<int>(upTo_.size()) <= maxK) upTo_.resize(maxK + 1);
-  if (!upTo_[maxK]) {
-    std::vector<Expr> roots;
-    for (int k = 0; k <= maxK; ++k) roots.push_back(derivativeExpr(k));
-    upTo_[maxK] = std::make_shared<const ExprProgram>(roots);
-  }
+  if (upTo_[maxK]) return *upTo_[maxK];
+  std::list<Compiled>& cache = compiledCache();
+  for (auto it = cache.begin(); it != cache.end(); ++it)
+    if (it->maxK == maxK && it->derivs.front() == derivs_.front()) {
+      cache.splice(cache.begin(), cache, it);
+      if (derivs_.size() < it->derivs.size()) derivs_ = it->derivs;  // the same derivatives, not formed again
+      return *(upTo_[maxK] = it->program);
+    }
+  std::vector<Expr> roots;
+  for (int k = 0; k <= maxK; ++k) roots.push_back(derivativeExpr(k));
+  upTo_[maxK] = std::make_shared<const ExprProgram>(roots);
+  cache.push_front({maxK, roots, upTo_[maxK]});
+  if (cache.size() > kCompiledKept) cache.pop_back();
   return *upTo_[maxK];
 }
 
