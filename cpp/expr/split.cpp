@@ -1,6 +1,7 @@
 #include "expr/split.hpp"
 
 #include <cmath>
+#include <list>
 #include <map>
 
 namespace pdesurf {
@@ -264,7 +265,38 @@ Expr productExpr(const Product& p) {
 
 }  // namespace
 
+namespace {
+
+Split splitUncached(const Expr& e, bool secondPolynomialOnly);
+
+// Splits made before, by expression (interned: an unchanged field of an edited scene is the
+// same node while the last solve holds it); per thread, the most recent kSplitsKept, each
+// holding its expression alive so that no other node takes its address.
+struct KeptSplit {
+  Expr e;
+  bool secondPolynomialOnly;
+  Split split;
+};
+constexpr size_t kSplitsKept = 256;
+
+}  // namespace
+
 Split splitExpression(const Expr& e, bool secondPolynomialOnly) {
+  thread_local std::list<KeptSplit> kept;  // most recent first
+  for (auto it = kept.begin(); it != kept.end(); ++it)
+    if (it->e == e && it->secondPolynomialOnly == secondPolynomialOnly) {
+      kept.splice(kept.begin(), kept, it);
+      return it->split;
+    }
+  Split out = splitUncached(e, secondPolynomialOnly);
+  kept.push_front({e, secondPolynomialOnly, out});
+  if (kept.size() > kSplitsKept) kept.pop_back();
+  return out;
+}
+
+namespace {
+
+Split splitUncached(const Expr& e, bool secondPolynomialOnly) {
   Split out;
   std::map<std::tuple<int, double, int, int, double, int>, size_t> index;  // merge equal terms
   auto addTerm = [&](double coef, const VFunction& fv, const VFunction& fs) {
@@ -321,5 +353,7 @@ Split splitExpression(const Expr& e, bool secondPolynomialOnly) {
   out.terms.swap(kept);
   return out;
 }
+
+}  // namespace
 
 }  // namespace pdesurf
