@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "expr/interval.hpp"
+#include "expr/program.hpp"
 
 namespace pdesurf {
 
@@ -178,20 +179,30 @@ double checkTrimline(const EndReference& ref, const PrimarySurface& S, const Tri
     if (!along.allFinite() || !(along.norm() > 1e-9 * maxT) || !(T.norm() > 0)) return double(INFINITY);
     return T.normalized().cross(along.normalized()).norm();  // unit first: tiny surfaces do not underflow
   };
+  for (int k = 0; k < kSamples; ++k) vs[k] = bv0 + (bv1 - bv0) * k / (kSamples - 1);
+  // Every sample of every expression by one program: they share the surface's terms (a
+  // profile's powers of cos(v/4) - sin(v/4)), which a walk of each tree computed again and again.
+  // Rows: tau, P, T, dP, power, then C (curvature).
+  std::vector<Expr> roots{e.tau, e.P[0], e.P[1], e.P[2], e.T[0], e.T[1], e.T[2], dP[0], dP[1], dP[2], ref.power};
+  if (curvature) roots.insert(roots.end(), {e.C[0], e.C[1], e.C[2]});
+  std::vector<std::vector<double>> rows(roots.size(), std::vector<double>(kSamples));
+  std::vector<double*> outs;
+  for (std::vector<double>& r : rows) outs.push_back(r.data());
+  ExprProgram(roots).runAll(vs.data(), nullptr, vs.size(), outs.data());
+  const auto row3 = [&](size_t first, int k) { return Eigen::Vector3d(rows[first][k], rows[first + 1][k], rows[first + 2][k]); };
   for (int k = 0; k < kSamples; ++k) {
-    const double v = vs[k] = bv0 + (bv1 - bv0) * k / (kSamples - 1);
-    const double t = eval1(e.tau, v);
-    if (!std::isfinite(t)) fail(ErrorCode::NonFinite, at, "the trimline is not finite at v = " + shortNumber(v));
-    const Eigen::Vector3d P = eval3(e.P, v), T = eval3(e.T, v);
-    if (!P.allFinite() || !std::isfinite(T.norm()) || (curvature && !eval3(e.C, v).allFinite()))
+    const double v = vs[k];
+    if (!std::isfinite(rows[0][k])) fail(ErrorCode::NonFinite, at, "the trimline is not finite at v = " + shortNumber(v));
+    const Eigen::Vector3d P = row3(1, k), T = row3(4, k);
+    if (!P.allFinite() || !std::isfinite(T.norm()) || (curvature && !row3(11, k).allFinite()))
       fail(ErrorCode::NonFinite, ref.path, "'" + ref.surface + "' or its t-derivatives are not finite on the trimline at v = " + shortNumber(v));
-    if (!std::isfinite(eval1(ref.power, v))) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + shortNumber(v));
+    if (!std::isfinite(rows[10][k])) fail(ErrorCode::NonFinite, ref.path + ".power", "not finite at v = " + shortNumber(v));
     Ts[k] = T;
     speed[k] = T.norm();
     maxT = std::max(maxT, speed[k]);
     sum += speed[k];
   }
-  for (int k = 0; k < kSamples; ++k) sine[k] = sineAt(Ts[k], eval3(dP, vs[k]));
+  for (int k = 0; k < kSamples; ++k) sine[k] = sineAt(Ts[k], row3(7, k));
   const auto speedAt = [&](double v) { return eval3(e.T, v).norm(); };
   minimaBelow(vs, speed, speedAt, 1e-9 * maxT, [&](double v) {
     fail(ErrorCode::InvalidField, at, "dS/dt of '" + ref.surface + "' vanishes on the trimline at v = " + shortNumber(v) + ": no direction across it");
