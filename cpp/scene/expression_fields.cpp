@@ -87,10 +87,81 @@ Expr surfaceField(const json& j, const std::string& path, const Resolver& r) {
   return parseField(j, path, r, vars, &text);
 }
 
+namespace {
+
+constexpr uint8_t kV = 1u << static_cast<int>(ExprVar::V), kT = 1u << static_cast<int>(ExprVar::U);
+
+void factorsOf(const Expr& e, std::vector<Expr>& out) {
+  if (e->op == ExprNode::Op::Mul) {
+    factorsOf(e->a, out);
+    factorsOf(e->b, out);
+    return;
+  }
+  out.push_back(e);
+}
+
+// e as ± its additive parts.
+void summandsOf(const Expr& e, double sign, std::vector<std::pair<double, Expr>>& out) {
+  if (e->op == ExprNode::Op::Add) return summandsOf(e->a, sign, out), summandsOf(e->b, sign, out);
+  if (e->op == ExprNode::Op::Sub) return summandsOf(e->a, sign, out), summandsOf(e->b, -sign, out);
+  if (e->op == ExprNode::Op::Neg) return summandsOf(e->a, -sign, out);
+  out.push_back({sign, e});
+}
+
+// sign·c·T(t)·g(v), T made of family functions of t and g anything of v (a wing's profile
+// curve, a product the split gave up on): separable still, with g a general function of v
+// (families when it splits), so drawing evaluates g once per grid line instead of the whole
+// part at every point. False (nothing added) when it is not of that form.
+bool separateOverV(double sign, const Expr& part, std::vector<PrimaryTerm>& terms) {
+  std::vector<Expr> factors;
+  factorsOf(part, factors);
+  Expr vPart = constant(1.0), tPart = constant(sign);
+  for (const Expr& f : factors) {
+    if ((f->vars & kV) && (f->vars & kT)) return false;
+    if (f->vars & kT) tPart = multiply(tPart, f);
+    else vPart = multiply(vPart, f);
+  }
+  const Split ts = splitExpression(tPart);  // t is the split's second variable
+  if (ts.remainder) return false;
+  for (const SplitTerm& s : ts.terms)
+    if (!(s.v.isPoly() && s.v.n == 0)) return false;
+  const Split vs = splitExpression(vPart);
+  bool vFamilies = !vs.remainder;
+  for (const SplitTerm& s : vs.terms) vFamilies = vFamilies && s.s.isPoly() && s.s.n == 0;
+  std::vector<PrimaryTerm> added;
+  if (vFamilies) {
+    for (const SplitTerm& a : ts.terms)
+      for (const SplitTerm& b : vs.terms) added.push_back({a.s, b.v, a.coef * b.coef});
+  } else {
+    VFunction g;
+    g.family = Family::General;
+    g.general = std::make_shared<GeneralFunction>(toTextLimited(vPart, 200), vPart);
+    for (const SplitTerm& a : ts.terms) added.push_back({a.s, g, a.coef});
+  }
+  terms.insert(terms.end(), added.begin(), added.end());
+  return true;
+}
+
+}  // namespace
+
 void splitSurface(const Expr& e, std::vector<PrimaryTerm>& terms, Expr* pointwise) {
   const Split sp = splitExpression(e);
   for (const SplitTerm& t : sp.terms) terms.push_back({t.s, t.v, t.coef});
-  *pointwise = sp.remainder;
+  if (!sp.remainder) return void(*pointwise = nullptr);
+  // What did not split, summand by summand: separable over v where it can be, else pointwise.
+  std::vector<std::pair<double, Expr>> summands;
+  for (const Expr& part : sp.remainderParts) summandsOf(part, 1.0, summands);
+  std::vector<PrimaryTerm> separated;
+  Expr rest;
+  for (const auto& [sign, part] : summands) {
+    if (separateOverV(sign, part, separated)) continue;
+    const Expr signed_ = sign > 0 ? part : negate(part);
+    rest = rest ? add(rest, signed_) : signed_;
+  }
+  // Nothing separated: the remainder as the split made it (the same node, the same drawing).
+  if (separated.empty()) return void(*pointwise = sp.remainder);
+  terms.insert(terms.end(), separated.begin(), separated.end());
+  *pointwise = rest;
 }
 
 }  // namespace pdesurf::scene_json
