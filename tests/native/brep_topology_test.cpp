@@ -297,9 +297,11 @@ TEST_CASE("bodies' faces: border points tabulated a line at once and the border 
   std::mt19937 rng(4112);
   std::uniform_real_distribution<double> unit(0, 1);
   int checks = 0;
-  for (const char* file : {"you2004-fig8d.json", "bottle-solid.json", "you2004-fig4a.json", "ref-sphere-fillet.json", "you2004-fig8c.json",
-                           "fill-four-strips.json"}) {
+  for (const char* file : {"bottle-solid.json", "you2004-fig4a.json", "ref-sphere-fillet.json", "fill-four-strips.json", "you2004-fig8d.json",
+                           "you2004-fig8c.json"}) {
     CAPTURE(file);
+    // Under a sanitizer the two models of many patches are left to the native run (2.7 s there).
+    if (kTimeScale > 1 && std::string(file).rfind("you2004-fig8", 0) == 0) continue;
     const Scene scene = parseScene(readText(examplePath(file)));
     const auto solved = solveScene(scene);
     const SolvedTopology st = solvedTopology(solved, sceneSizeOf(solved));
