@@ -7,6 +7,7 @@
 #include "cad/creases.hpp"
 #include "common/errors.hpp"
 #include "surface/combine_rows.hpp"
+#include "surface/mesh.hpp"
 #include "surface/tabulation.hpp"
 
 namespace pdesurf {
@@ -37,14 +38,12 @@ std::vector<double> uniform(double a, double b, int n) {
 // face were most of the bodies' time).
 void measureBorders(const SeparableSurface& s, FaceMeasure* m) {
   constexpr int n = 8;
-  std::vector<double> us = uniform(s.u0, s.u1, n), vs = uniform(s.v0, s.v1, n);
   std::vector<Eigen::Vector3d> x(size_t(n + 1) * (n + 1));  // [j * (n + 1) + i]
   try {
-    const Tabulation t = tabulateAt(s, us, vs, 1);  // positions; the rows' partials come with them
-    combineRows(t, [&](int j, const GridRow& row) {
-      for (int i = 0; i <= n; ++i) x[size_t(j) * (n + 1) + i] = Eigen::Vector3d(row.at(0, 0)[i], row.at(0, 1)[i], row.at(0, 2)[i]);
-    });
+    const GridSamples g = sampleGrid(s, n, n);
+    for (size_t k = 0; k < x.size(); ++k) x[k] = Eigen::Vector3d(&g.X[3 * k]);
   } catch (const Error&) {  // a partial not finite on a border: point by point, as before
+    const std::vector<double> us = uniform(s.u0, s.u1, n), vs = uniform(s.v0, s.v1, n);
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) x[size_t(j) * (n + 1) + i] = evalPoint(s, us[size_t(i)], vs[size_t(j)]);
   }
