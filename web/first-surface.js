@@ -23,7 +23,10 @@ export function showSolvedAhead({ solver, viewer, waitMs }) {
       }
       viewer.setPatches(withGridTopology(msg.result.patches, msg.options));
       viewer.fit();
-      viewer.afterNextFrame(() => resolve(true));
+      viewer.afterNextFrame(() => {
+        solver.certifyAhead();
+        resolve(true);
+      });
     });
     if (!heard) {
       timer = setTimeout(() => {

@@ -67,6 +67,7 @@ async function start() {
     fail(new Error(`cannot start WebGL: ${err.message}`));
     return;
   }
+  performance.mark('pdesurf:view-ready');
   // The example the worker solved ahead is drawn before the page is wired.
   await showSolvedAhead({ solver, viewer, waitMs: FIRST_SURFACE_WAIT_MS });
   // The catalogue and the scene (the worker fetched its own to solve ahead) are read after

@@ -97,6 +97,57 @@ describe('certified after drawing', { skip }, () => {
     await page.close();
   });
 
+  it('the worker: the report of the solve done ahead waits until the page says that surface is drawn; a solve since drops it', async () => {
+    const page = await h.open('/web/#example=you2004-fig4a');
+    const small = fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig4a.json'), 'utf8');
+    const seen = await page.evaluate(async (scene) => {
+      const start = (hash) => {
+        const worker = new Worker(`/web/solver/solver-worker.js#${new URLSearchParams({ first: hash })}`, { type: 'module' });
+        const got = [];
+        let wake = null;
+        worker.onmessage = (e) => {
+          const { id, kind, ok, result } = e.data;
+          got.push(`${kind} ${id ?? '-'} ${ok === false || (kind === 'ahead' && !result) ? 'failed' : 'ok'}${kind === 'report' ? ` ${result.joins.length} joins` : ''}`);
+          wake?.();
+        };
+        const until = (n) => new Promise((resolve) => {
+          wake = () => got.length >= n && resolve();
+          wake();
+        });
+        const quiet = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+        return { worker, got, until, quiet };
+      };
+      const out = {};
+      {
+        const w = start('#example=you2004-fig4a');
+        await w.until(1);
+        await w.quiet(1500); // a report begun unasked would come meanwhile (it takes ~100 ms)
+        out.held = [...w.got];
+        w.worker.postMessage({ kind: 'certifyAhead' });
+        await w.until(2);
+        w.worker.postMessage({ kind: 'certifyAhead' }); // a second time: nothing more
+        await w.quiet(800);
+        out.certified = [...w.got];
+        w.worker.terminate();
+      }
+      {
+        const w = start('#example=you2004-fig4a');
+        await w.until(1);
+        w.worker.postMessage({ id: 7, scene, options: { nu: 64, nv: 64, curvature: false, joins: true, crossings: false } });
+        await w.until(3); // its mesh, then its report
+        w.worker.postMessage({ kind: 'certifyAhead' });
+        await w.quiet(800);
+        out.solvedSince = [...w.got];
+        w.worker.terminate();
+      }
+      return out;
+    }, small);
+    assert.deepEqual(seen.held, ['ahead - ok']);
+    assert.deepEqual(seen.certified, ['ahead - ok', 'report ahead ok 2 joins']);
+    assert.deepEqual(seen.solvedSince, ['ahead - ok', 'solve 7 ok', 'report 7 ok 2 joins']);
+    await page.close();
+  });
+
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     it(`${viewport.width}×${viewport.height}: an edit of the aeroplane is drawn before its report; the Joins folder says "checking…", then shows it`, async () => {
       const page = await h.open('/web/#example=you2004-fig8d', { viewport });

@@ -4,10 +4,26 @@
 // and tests/browser/first-visit.test.mjs.
 import { launchChromium } from './harness.mjs';
 
+// Run in every page before its own scripts: the time of its first WebGL draw call, the moment
+// a page hands its first surface to the GPU, measured the same way on any page.
+function markFirstDrawCall() {
+  for (const proto of [globalThis.WebGLRenderingContext?.prototype, globalThis.WebGL2RenderingContext?.prototype]) {
+    for (const name of ['drawElements', 'drawArrays', 'drawElementsInstanced', 'drawArraysInstanced', 'drawRangeElements']) {
+      const call = proto?.[name];
+      if (!call) continue;
+      proto[name] = function firstDrawCall(...args) {
+        window.__firstDrawCallAt ??= performance.now();
+        return call.apply(this, args);
+      };
+    }
+  }
+}
+
 /**
  * Loads `url` in a browser of its own and waits until `frameMark()` (run in the page, e.g.
  * () => window.__pdesurf?.firstFrameAt) is a number, then, on pdesurf's page, until it is
  * ready (its first result handled and its panel built, after that frame): { frameMs,
+ * drawCallMs (its first WebGL draw call), marks ({ name: ms } of its pdesurf: marks),
  * readyMs (window.__pdesurf.readyAt), resources: { path: responseEnd ms }, info (the first
  * frame's { calls, programs }), solvedAhead (the first solve came from the worker's solve
  * ahead), surfaceBeforePanel (that solve came in time to be drawn before the panel was
@@ -17,6 +33,7 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
   const browser = await launchChromium({ viewport });
   const { context } = browser;
   try {
+    await context.addInitScript(markFirstDrawCall);
     const page = context.pages()[0] || (await context.newPage());
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
@@ -27,6 +44,9 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
     await page.waitForFunction(() => !window.__pdesurf || window.__pdesurf.ready, null, { timeout: 60_000 });
     const seen = await page.evaluate((ms) => ({
       frameMs: ms,
+      drawCallMs: window.__firstDrawCallAt ?? null,
+      // The page's own marks on the way (web/main.js, solver-client.js, viewer.js).
+      marks: Object.fromEntries(performance.getEntriesByType('mark').filter((m) => m.name.startsWith('pdesurf:')).map((m) => [m.name.slice(8), m.startTime])),
       readyMs: window.__pdesurf?.readyAt ?? null,
       resources: Object.fromEntries(performance.getEntriesByType('resource').map((r) => [new URL(r.name).pathname, r.responseEnd])),
       info: window.__pdesurf?.firstFrameInfo ?? null,

@@ -229,7 +229,8 @@ describe('the page side: the solver client', () => {
       c.request({ scene, options: OPENING_OPTIONS, token: 1 });
       await tick();
       assert.deepEqual(results, [['solved ahead', 1, 7]]);
-      assert.deepEqual(w.sent, []);
+      // Taken: the worker may now measure its report (held so as not to slow the first frame).
+      assert.deepEqual(w.sent, [{ kind: 'certifyAhead' }]);
       assert.deepEqual(early.got, ['solved ahead'], 'told once');
     });
 
@@ -272,5 +273,25 @@ describe('the page side: the solver client', () => {
       await tick();
       assert.deepEqual(results, [['solved ahead', 1, 7]]);
     });
+  });
+
+  it('certifyAhead: the worker that solved ahead is told once that its surface is drawn; another worker never', async () => {
+    {
+      const { c, w } = client({ earlyWorker: true });
+      w.reply(aheadMsg());
+      c.certifyAhead(); // web/first-surface.js, after that frame
+      c.request({ scene, options: OPENING_OPTIONS, token: 1 }); // taking it says so too
+      await tick();
+      c.certifyAhead();
+      assert.deepEqual(w.sent, [{ kind: 'certifyAhead' }]);
+    }
+    {
+      const { c, w } = client();
+      w.reply(aheadMsg());
+      c.certifyAhead();
+      c.request({ scene, options: OPENING_OPTIONS, token: 1 });
+      await tick();
+      assert.deepEqual(w.sent, []);
+    }
   });
 });

@@ -27,6 +27,8 @@
 //                  draw before the page is wired, web/first-surface.js; the request still
 //                  takes it), or fn(null) once none will come; returns a function that stops
 //                  listening.
+//   .certifyAhead() that result is on screen: the worker measures its join report now (it
+//                  held it so as not to slow the first frame; taking the result says so too).
 
 // A waiting edit cancels the running solve after this long, or after 1.5 times the last
 // solve's time if that is longer: a scene that always takes a second still shows a result
@@ -146,6 +148,7 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, onRep
       return;
     }
     if (msg.kind === 'ahead') {
+      performance.mark('pdesurf:ahead-arrived');
       arrivedAhead(msg);
       return;
     }
@@ -209,12 +212,22 @@ export function createSolverClient({ onResult, onError, onBusy = () => {}, onRep
     next();
   }
 
+  // The worker holds the report of its solve ahead until that surface is drawn (its work
+  // would slow the first frame down): the page says so once it is on screen, or takes it.
+  let aheadCertified = false;
+  client.certifyAhead = () => {
+    if (aheadCertified || !worker?.solvesAhead) return;
+    aheadCertified = true;
+    worker.postMessage({ kind: 'certifyAhead' });
+  };
+
   client.request = (job) => {
     latestToken = job.token;
     requested = true;
     const early = ahead;
     ahead = null;
     if (early && !running && !exporting && sameSolve(early, job)) {
+      client.certifyAhead();
       // After the caller's task, as a worker's reply would be (the caller may not be ready).
       queueMicrotask(() => {
         if (job.token === latestToken) deliver(['ahead'], early.result, job, early.ms);

@@ -24,7 +24,8 @@
 //        worker at once, what an edit may wait behind it), or the same failure as a solve
 // A new solve drops the report in progress (it is of an older scene); any other request (an
 // export), or a solve that fails, pauses it: it starts again after, keeping the parts already
-// measured.
+// measured. The report of the solve done ahead begins when the page says it has drawn it:
+//   in:  { kind: 'certifyAhead' } (no reply but that report)
 import { loadSolver } from './pdesurf-solver.js';
 import { createAheadSolve } from './ahead-solve.js';
 
@@ -100,10 +101,19 @@ const run = {
 // The scene a cold start will ask for first, solved as soon as the module is ready, while
 // the page is still loading: web/boot.js starts this worker with the page's hash in its URL
 // (#first=…; a message would wait behind the module's loading).
+// Its report waits until the page has drawn it ({ kind: 'certifyAhead' }): measured at once,
+// the report's calls made the engine optimise the module on the machine's other core while
+// that first frame was being drawn (40 ms later on screen with two cores).
+let heldAheadReport = null; // { options } of the solve ahead posted, its report not begun
 const ahead = createAheadSolve(ready, run.solve, (message, transfer) => {
   self.postMessage({ kind: 'ahead', ...message }, transfer);
-  if (message.result?.reportPending) ready.then((solver) => certifyAfter(solver, 'ahead', message.options));
+  if (message.result?.reportPending) heldAheadReport = { options: message.options };
 });
+async function certifyAhead() {
+  const held = heldAheadReport;
+  heldAheadReport = null;
+  if (held && !reporting) certifyAfter(await ready, 'ahead', held.options);
+}
 
 // The join report of the module's last solve, after its mesh was posted: in slices, so the
 // next edit (a message) runs between them instead of waiting for the whole report.
@@ -154,6 +164,10 @@ if (first !== null) {
 self.onmessage = async (event) => {
   asked = true;
   const { id, kind = 'solve', scene, options } = event.data;
+  if (kind === 'certifyAhead') {
+    certifyAhead();
+    return;
+  }
   // A solve makes the report in progress stale; anything else pauses it (resumed below), and
   // so does a solve that fails: the module's last solve is still the one drawn.
   const paused = reporting;
@@ -172,6 +186,7 @@ self.onmessage = async (event) => {
     const [result, transfer] = run[kind](solver, scene, options, id);
     self.postMessage({ id, kind, ok: true, result, ms: performance.now() - t0 }, transfer);
     solved = kind === 'solve';
+    if (solved) heldAheadReport = null; // the module's last solve is no longer the one ahead
     if (solved && result.reportPending) certifyAfter(solver, id, options);
   } catch (err) {
     const error = { code: String(err?.code || 'Internal'), message: String(err?.message || err) };

@@ -77,6 +77,7 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
   let afterShown = []; // callbacks for once the next frame drawn is on screen
   function draw() {
     frame = 0;
+    if (!surfaceDrawn && surfaces.children.length > 0) performance.mark('pdesurf:first-draw');
     renderer.render(scene, camera);
     if (!surfaceDrawn && surfaces.children.length > 0) {
       surfaceDrawn = true;
