@@ -5,14 +5,17 @@
 import { launchChromium } from './harness.mjs';
 
 // Run in every page before its own scripts: the time of its first WebGL draw call, the moment
-// a page hands its first surface to the GPU, measured the same way on any page.
+// a page hands its first surface to the GPU, measured the same way on any page; and of its
+// first read of a program's link status (which waits for the GPU process to have linked it).
 function markFirstDrawCall() {
+  const marks = { drawElements: '__firstDrawCallAt', drawArrays: '__firstDrawCallAt', drawElementsInstanced: '__firstDrawCallAt',
+    drawArraysInstanced: '__firstDrawCallAt', drawRangeElements: '__firstDrawCallAt', getProgramParameter: '__firstProgramCheckAt' };
   for (const proto of [globalThis.WebGLRenderingContext?.prototype, globalThis.WebGL2RenderingContext?.prototype]) {
-    for (const name of ['drawElements', 'drawArrays', 'drawElementsInstanced', 'drawArraysInstanced', 'drawRangeElements']) {
+    for (const [name, mark] of Object.entries(marks)) {
       const call = proto?.[name];
       if (!call) continue;
-      proto[name] = function firstDrawCall(...args) {
-        window.__firstDrawCallAt ??= performance.now();
+      proto[name] = function marked(...args) {
+        window[mark] ??= performance.now();
         return call.apply(this, args);
       };
     }
@@ -23,7 +26,8 @@ function markFirstDrawCall() {
  * Loads `url` in a browser of its own and waits until `frameMark()` (run in the page, e.g.
  * () => window.__pdesurf?.firstFrameAt) is a number, then, on pdesurf's page, until it is
  * ready (its first result handled and its panel built, after that frame): { frameMs,
- * drawCallMs (its first WebGL draw call), marks ({ name: ms } of its pdesurf: marks),
+ * drawCallMs (its first WebGL draw call), programCheckMs (its first read of a program's
+ * status), marks ({ name: ms } of its pdesurf: marks),
  * readyMs (window.__pdesurf.readyAt), resources: { path: responseEnd ms }, info (the first
  * frame's { calls, programs }), solvedAhead (the first solve came from the worker's solve
  * ahead), surfaceBeforePanel (that solve came in time to be drawn before the panel was
@@ -45,6 +49,7 @@ export async function firstVisit(url, frameMark, { viewport = { width: 1280, hei
     const seen = await page.evaluate((ms) => ({
       frameMs: ms,
       drawCallMs: window.__firstDrawCallAt ?? null,
+      programCheckMs: window.__firstProgramCheckAt ?? null,
       // The page's own marks on the way (web/main.js, solver-client.js, viewer.js).
       marks: Object.fromEntries(performance.getEntriesByType('mark').filter((m) => m.name.startsWith('pdesurf:')).map((m) => [m.name.slice(8), m.startTime])),
       readyMs: window.__pdesurf?.readyAt ?? null,

@@ -114,9 +114,18 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
   const warmUp = new THREE.Group();
   warmUp.add(...shaderWarmUpMeshes());
   // Without KHR_parallel_shader_compile (SwiftShader) compileAsync only warns and compiles:
-  // compile() starts the same work in the GPU process without the warning.
-  if (renderer.extensions.has('KHR_parallel_shader_compile')) renderer.compileAsync(warmUp, camera, scene).catch(() => {});
-  else renderer.compile(warmUp, camera, scene);
+  // compile() starts the same work in the GPU process without the warning. Then, still before
+  // that frame, each program's first use (three reads its link status and uniform locations,
+  // waiting for the GPU process to have linked it: 15-25 ms of the first frame with SwiftShader).
+  const firstUse = () => {
+    if (shown) return;
+    for (const m of warmUp.children) renderer.properties.get(m.material).currentProgram?.getUniforms();
+  };
+  if (renderer.extensions.has('KHR_parallel_shader_compile')) renderer.compileAsync(warmUp, camera, scene).then(firstUse, () => {});
+  else {
+    renderer.compile(warmUp, camera, scene);
+    setTimeout(firstUse, 0); // a task of its own: a result already here is drawn first
+  }
 
   return {
     renderer,
