@@ -97,6 +97,51 @@ describe('certified after drawing', { skip }, () => {
     await page.close();
   });
 
+  it('the worker: a scene of 63 patches and 42 joins is drawn before its long report, which the next edit drops', async () => {
+    // fig2a's three patches 21 times side by side (issue 37's bad input: a certificate that
+    // takes long keeps nothing waiting).
+    const fig2a = JSON.parse(fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig2a.json'), 'utf8'));
+    const many = (shift) => ({ ...fig2a, patches: Array.from({ length: 21 }, (_, k) => fig2a.patches.map((p) => {
+      const q = structuredClone(p);
+      const dx = ` + ${6 * k + shift}`;
+      q.name = `${p.name}_${k}`;
+      if (q.meets) q.meets.patch = `blend_${k}`;
+      if (q.kind === 'pde') {
+        q.boundary.x.u0[0] += dx;
+        q.boundary.x.u1[0] += dx;
+      } else q.x += dx;
+      return q;
+    })).flat() });
+    const page = await h.open('/web/#example=you2004-fig4a');
+    const messages = await page.evaluate(async ([sa, sb]) => {
+      const worker = new Worker('/web/solver/solver-worker.js', { type: 'module' });
+      const got = [];
+      const options = { nu: 64, nv: 64, curvature: false, joins: true, crossings: true };
+      const done = new Promise((resolve) => {
+        worker.onmessage = (e) => {
+          const { id, kind, ok, result, ms, longestSliceMs } = e.data;
+          if (kind === 'ahead') return;
+          got.push({ id, kind, ok, at: performance.now(), ms, longestSliceMs, joins: kind === 'report' ? result.joins.length : null, patches: kind === 'solve' ? result.patches.length : null });
+          if (kind === 'solve' && id === 1) worker.postMessage({ id: 2, scene: sb, options, sentAt: performance.now() }); // an edit while 1 is certified
+          if (kind === 'report') setTimeout(() => resolve(got), 1500); // anything after it would show here
+        };
+      });
+      worker.postMessage({ id: 1, scene: sa, options });
+      const out = await done;
+      worker.terminate();
+      return out;
+    }, [JSON.stringify(many(0)), JSON.stringify(many(0.01))]);
+    assert.deepEqual(messages.map((m) => `${m.kind} ${m.id}`), ['solve 1', 'solve 2', 'report 2'], JSON.stringify(messages));
+    const [first, second, report] = messages;
+    assert.equal(first.patches, 63);
+    assert.equal(report.joins, 42);
+    console.log(`# 63 patches: the edit's mesh ${(second.at - first.at).toFixed(0)} ms after the first one's, its report ${report.ms.toFixed(0)} ms, at most ${report.longestSliceMs.toFixed(0)} ms at once`);
+    // The edit did not wait for the first report (as long as the second): at most a slice.
+    assert.ok(second.at - first.at < second.ms + report.ms / 2, JSON.stringify(messages));
+    assert.ok(report.longestSliceMs < report.ms / 2, 'the report held the worker in one piece');
+    await page.close();
+  });
+
   it('the worker: the report of the solve done ahead waits until the page says that surface is drawn; a solve since drops it', async () => {
     const page = await h.open('/web/#example=you2004-fig4a');
     const small = fs.readFileSync(path.join(REPO, 'examples', 'you2004-fig4a.json'), 'utf8');
