@@ -119,12 +119,23 @@ export function createViewer(container, bezierEditing, { onFirstSurfaceFrame = n
   // waiting for the GPU process to have linked it: 15-25 ms of the first frame with SwiftShader).
   const firstUse = () => {
     if (shown) return;
-    for (const m of warmUp.children) renderer.properties.get(m.material).currentProgram?.getUniforms();
+    try {
+      for (const m of warmUp.children) renderer.properties.get(m.material).currentProgram?.getUniforms();
+    } catch {
+      // only a warm-up: the first frame does it (and reports a failure) otherwise
+    }
   };
   if (renderer.extensions.has('KHR_parallel_shader_compile')) renderer.compileAsync(warmUp, camera, scene).then(firstUse, () => {});
   else {
     renderer.compile(warmUp, camera, scene);
-    setTimeout(firstUse, 0); // a task of its own: a result already here is drawn first
+    // A task of its own, queued as messages are: before a result the worker posts later, and
+    // after one already here (that frame then does it).
+    const channel = new MessageChannel();
+    channel.port1.onmessage = () => {
+      channel.port1.close();
+      firstUse();
+    };
+    channel.port2.postMessage(null);
   }
 
   return {
