@@ -40,7 +40,6 @@ describe('first visit', { skip }, () => {
     const { 'view-ready': view, 'ahead-arrived': arrived, 'first-draw': drawn } = r.marks;
     assert.ok(view > 0 && arrived > 0 && drawn >= Math.max(view, arrived), JSON.stringify(r.marks));
     assert.ok(r.drawCallMs >= drawn && r.drawCallMs <= r.frameMs, `draw call ${r.drawCallMs} ms, drawn from ${drawn} ms, shown ${r.frameMs} ms`);
-
   });
 
   it('while the worker solves, the page compiles the patch material\'s program and makes its first use', async () => {
